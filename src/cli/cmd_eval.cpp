@@ -1,0 +1,64 @@
+// `pathref eval RULE key=value ...` and `pathref eval --list`: ask the reference for any rule.
+#include <fmt/core.h>
+
+#include <string>
+#include <vector>
+
+#include "commands.hpp"
+#include "pathref/core/error.hpp"
+#include "pathref/rules/registry.hpp"
+
+namespace pathref::cli {
+
+namespace {
+
+/// key=value: the value is parsed as JSON when it parses (numbers, arrays, true/false, objects),
+/// otherwise taken as a plain string (so `policy=strict` needs no quotes).
+rules::Json parse_assignments(const std::vector<std::string>& assignments) {
+  rules::Json input = rules::Json::object();
+  for (const std::string& a : assignments) {
+    const auto eq = a.find('=');
+    if (eq == std::string::npos || eq == 0)
+      throw UsageError("expected key=value, got '" + a + "'");
+    const std::string key = a.substr(0, eq);
+    const std::string text = a.substr(eq + 1);
+    rules::Json value = rules::Json::parse(text, nullptr, /*allow_exceptions=*/false);
+    input[key] = value.is_discarded() ? rules::Json(text) : value;
+  }
+  return input;
+}
+
+}  // namespace
+
+void add_eval_command(CLI::App& app, Action& run) {
+  auto* cmd = app.add_subcommand("eval", "Evaluate one spec rule at the given inputs; prints JSON");
+  static std::string rule_id;
+  static std::vector<std::string> assignments;
+  static bool list = false;
+  cmd->add_flag("--list", list, "List every rule with its inputs and outputs");
+  cmd->add_option("rule", rule_id, "Rule id, e.g. grid.coord");
+  cmd->add_option("inputs", assignments, "key=value inputs (values are JSON or plain strings)");
+  cmd->callback([&run] {
+    run = [] {
+      const auto& reg = rules::registry();
+      if (list) {
+        for (const auto& r : reg.all()) {
+          fmt::print("{}  {}\n", r.id, r.summary);
+          for (const auto& f : r.inputs) fmt::print("    in  {} : {} - {}\n", f.name, f.type, f.doc);
+          for (const auto& f : r.outputs) fmt::print("    out {} : {} - {}\n", f.name, f.type, f.doc);
+        }
+        return 0;
+      }
+      if (rule_id.empty()) throw UsageError("eval needs a RULE (see pathref eval --list)");
+      const rules::Rule* rule = reg.find(rule_id);
+      if (rule == nullptr)
+        throw UsageError("unknown rule '" + rule_id + "' (see pathref eval --list)");
+      const rules::Json input = parse_assignments(assignments);
+      const rules::Json out = rule->eval(input);
+      fmt::print("{}\n", rules::Json{{"rule", rule->id}, {"input", input}, {"output", out}}.dump(2));
+      return 0;
+    };
+  });
+}
+
+}  // namespace pathref::cli

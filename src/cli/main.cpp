@@ -1,0 +1,38 @@
+// pathref: the command-line front end of the reference implementation.
+#include <fmt/core.h>
+
+#include <cstdio>
+#include <exception>
+
+#include "commands.hpp"
+#include "pathref/core/error.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App app{"pathref " PATHREF_VERSION
+               " - formally specified reference implementation of grid path planners"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", PATHREF_VERSION);
+  pathref::cli::Action run;
+  pathref::cli::add_plan_commands(app, run);
+  pathref::cli::add_eval_command(app, run);
+  pathref::cli::add_golden_command(app, run);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    // CLI11 returns 0 for --help/--version; every real argument error is exit 2.
+    return code == 0 ? 0 : 2;
+  }
+  try {
+    return run ? run() : 2;
+  } catch (const pathref::ParseError& e) {
+    fmt::print(stderr, "pathref: error: {}\n", e.what());
+    return 2;
+  } catch (const pathref::Error& e) {
+    fmt::print(stderr, "pathref: {}: {}\n", e.kind(), e.what());
+    return 2;
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "pathref: internal error: {}\n", e.what());
+    return 3;
+  }
+}

@@ -1,0 +1,275 @@
+#include "pathref/golden/runner.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "pathref/core/error.hpp"
+#include "pathref/rules/registry.hpp"
+
+namespace pathref::golden {
+
+namespace fs = std::filesystem;
+
+std::size_t Report::count(Status s) const {
+  return static_cast<std::size_t>(
+      std::count_if(cases.begin(), cases.end(), [s](const CaseResult& c) { return c.status == s; }));
+}
+
+Json compose_input(const Json& doc, const Json& group, const Json& test) {
+  Json input = Json::object();
+  if (group.contains("params")) input.update(group.at("params"));
+  if (test.contains("input")) input.update(test.at("input"));
+  if (test.contains("interpretation")) {
+    for (const auto& [note, option] : test.at("interpretation").items()) {
+      const Json& notes = doc.at("notes");
+      if (!notes.contains(note) || !notes.at(note).contains("param"))
+        throw UsageError("interpretation names note '" + note + "', which has no 'param'");
+      input[notes.at(note).at("param").get<std::string>()] = option;
+    }
+  }
+  return input;
+}
+
+namespace {
+
+bool is_special_string(const Json& v) {
+  return v.is_string() && (v == "inf" || v == "-inf" || v == "nan" || v == "nan:any");
+}
+
+double as_double(const Json& v) {
+  if (v.is_number()) return v.get<double>();
+  const auto s = v.get<std::string>();
+  if (s == "inf") return INFINITY;
+  if (s == "-inf") return -INFINITY;
+  return NAN;
+}
+
+std::string show(const Json& v) {
+  std::string s = v.dump();
+  if (s.size() > 200) s = s.substr(0, 200) + "...";
+  return s;
+}
+
+}  // namespace
+
+std::string compare(const Json& expected, const Json& actual, const Json& tolerance,
+                    const std::string& where) {
+  const std::string at = where.empty() ? "" : " at " + where;
+  if (expected == "nan:any") {
+    return (actual.is_string() && actual.get<std::string>().starts_with("nan"))
+               ? ""
+               : "expected nan, got " + show(actual) + at;
+  }
+  if (expected.is_number() || is_special_string(expected)) {
+    if (!(actual.is_number() || is_special_string(actual)))
+      return "expected number " + show(expected) + ", got " + show(actual) + at;
+    if (expected.is_number_integer() && actual.is_number_integer())
+      return expected.get<long long>() == actual.get<long long>()
+                 ? ""
+                 : "expected " + show(expected) + ", got " + show(actual) + at;
+    const double e = as_double(expected);
+    const double a = as_double(actual);
+    if (std::isnan(e) || std::isinf(e) || std::isnan(a) || std::isinf(a)) {
+      const bool same = (std::isnan(e) && std::isnan(a)) || e == a;
+      return same ? "" : "expected " + show(expected) + ", got " + show(actual) + at;
+    }
+    const double abs_tol = tolerance.value("abs", 0.0);
+    const double rel_tol = tolerance.value("rel", 0.0);
+    const double allowed = std::max(abs_tol, rel_tol * std::fabs(e));
+    if (std::fabs(a - e) <= allowed) return "";
+    std::ostringstream os;
+    os.precision(17);
+    os << "expected " << e << ", got " << a << " (|diff| " << std::fabs(a - e) << " > " << allowed
+       << ")" << at;
+    return os.str();
+  }
+  if (expected.is_array()) {
+    if (!actual.is_array()) return "expected an array, got " + show(actual) + at;
+    if (expected.size() != actual.size())
+      return "expected " + std::to_string(expected.size()) + " elements, got " +
+             std::to_string(actual.size()) + at;
+    for (std::size_t i = 0; i < expected.size(); ++i) {
+      std::string d = compare(expected[i], actual[i], tolerance, where + "[" + std::to_string(i) + "]");
+      if (!d.empty()) return d;
+    }
+    return "";
+  }
+  if (expected.is_object()) {
+    if (!actual.is_object()) return "expected an object, got " + show(actual) + at;
+    for (const auto& [k, v] : expected.items()) {
+      if (!actual.contains(k)) return "missing output '" + k + "'" + at;
+      std::string d = compare(v, actual.at(k), tolerance, where.empty() ? k : where + "." + k);
+      if (!d.empty()) return d;
+    }
+    return "";
+  }
+  return expected == actual ? "" : "expected " + show(expected) + ", got " + show(actual) + at;
+}
+
+namespace {
+
+const Json& tolerance_of(const Json& group, const Json& test) {
+  if (test.contains("tolerance")) return test.at("tolerance");
+  return group.at("tolerance");
+}
+
+/// Runs one test. Returns the actual output, or {"error": kind} when the rule threw.
+Json run_rule(const rules::Rule& rule, const Json& input) {
+  try {
+    return rule.eval(input);
+  } catch (const UsageError&) {
+    throw;  // a malformed vector is the vector's fault, not a result
+  } catch (const Error& e) {
+    return Json{{"error", e.kind()}, {"message", e.what()}};
+  }
+}
+
+CaseResult check_test(const Json& doc, const Json& group, const Json& test, const rules::Rule& rule,
+                      const std::string& file) {
+  CaseResult r;
+  r.file = file;
+  r.rule = rule.id;
+  r.tc_id = test.at("tcId").get<long long>();
+  try {
+    const Json& expected = test.at("expected");
+    if (expected.is_null()) {
+      r.status = Status::fail;
+      r.message = "expected is null: run `pathref golden regenerate`";
+      return r;
+    }
+    const Json actual = run_rule(rule, compose_input(doc, group, test));
+    const std::string result = test.at("result").get<std::string>();
+    if (result == "invalid") {
+      if (!actual.contains("error")) {
+        r.status = Status::fail;
+        r.message = "expected error " + expected.value("error", std::string("?")) + ", got " +
+                    actual.dump();
+      } else if (actual.at("error") != expected.at("error")) {
+        r.status = Status::fail;
+        r.message = "expected error " + expected.at("error").dump() + ", got " +
+                    actual.at("error").dump() + ": " + actual.value("message", std::string());
+      }
+      return r;
+    }
+    if (actual.contains("error")) {
+      r.status = Status::fail;
+      r.message = "unexpected " + actual.at("error").get<std::string>() + ": " +
+                  actual.value("message", std::string());
+      return r;
+    }
+    r.message = compare(expected, actual, tolerance_of(group, test));
+    if (!r.message.empty()) r.status = Status::fail;
+  } catch (const std::exception& e) {
+    r.status = Status::fail;
+    r.message = std::string("malformed vector: ") + e.what();
+  }
+  return r;
+}
+
+}  // namespace
+
+Report check_document(const Json& doc, const std::string& file) {
+  Report report;
+  const std::string id = doc.at("rule").get<std::string>();
+  const rules::Rule* rule = rules::registry().find(id);
+  if (rule == nullptr) {
+    report.cases.push_back(CaseResult{file, id, 0, Status::fail, "rule not implemented: " + id});
+    return report;
+  }
+  for (const Json& group : doc.at("testGroups"))
+    for (const Json& test : group.at("tests"))
+      report.cases.push_back(check_test(doc, group, test, *rule, file));
+  return report;
+}
+
+namespace {
+Json read_json(const fs::path& p) {
+  std::ifstream in(p);
+  if (!in) throw UsageError("cannot open " + p.string());
+  try {
+    return Json::parse(in);
+  } catch (const Json::parse_error& e) {
+    throw ParseError(p.string(), 0, e.byte, std::string("invalid JSON: ") + e.what());
+  }
+}
+}  // namespace
+
+Report check_directory(const fs::path& dir) {
+  Report report;
+  if (!fs::is_directory(dir)) throw UsageError("not a directory: " + dir.string());
+  std::vector<fs::path> files;
+  for (const auto& entry : fs::recursive_directory_iterator(dir)) {
+    if (!entry.is_regular_file() || entry.path().extension() != ".json") continue;
+    if (entry.path().parent_path().filename() == "schema") continue;
+    files.push_back(entry.path());
+  }
+  std::sort(files.begin(), files.end());
+  for (const auto& p : files) {
+    Report r = check_document(read_json(p), p.string());
+    report.cases.insert(report.cases.end(), r.cases.begin(), r.cases.end());
+  }
+  return report;
+}
+
+Json regenerate_document(const Json& doc, const std::string& file) {
+  Json out = doc;
+  const std::string id = doc.at("rule").get<std::string>();
+  const rules::Rule* rule = rules::registry().find(id);
+  if (rule == nullptr) throw UsageError(file + ": rule not implemented: " + id);
+  std::size_t n = 0;
+  for (Json& group : out.at("testGroups")) {
+    const std::string provenance = group.at("provenance").get<std::string>();
+    // Only characterization values come from the library; every other provenance is a value
+    // from outside it (a person, a paper, an independent oracle) and is verified, never written.
+    const bool verify_only = provenance != "characterization";
+    for (Json& test : group.at("tests")) {
+      ++n;
+      Json actual = run_rule(*rule, compose_input(out, group, test));
+      actual.erase("message");
+      Json& expected = test["expected"];
+      const std::string result = test.at("result").get<std::string>();
+      Json fresh;
+      if (result == "invalid") {
+        if (!actual.contains("error"))
+          throw UsageError(file + " tcId " + test.at("tcId").dump() +
+                           ": marked invalid but the rule returned " + actual.dump());
+        fresh = Json{{"error", actual.at("error")}};
+      } else {
+        if (actual.contains("error"))
+          throw UsageError(file + " tcId " + test.at("tcId").dump() + ": rule threw " +
+                           actual.at("error").get<std::string>());
+        if (expected.is_object()) {
+          fresh = Json::object();
+          for (const auto& [k, v] : expected.items()) {
+            if (!actual.contains(k))
+              throw UsageError(file + " tcId " + test.at("tcId").dump() + ": no output " + k);
+            fresh[k] = actual.at(k);
+          }
+        } else {
+          fresh = actual;
+        }
+      }
+      if (expected.is_null()) {
+        if (verify_only)
+          throw UsageError(file + " tcId " + test.at("tcId").dump() + ": " + provenance +
+                           "-provenance values must be written by hand, not generated");
+        expected = fresh;
+      } else if (verify_only) {
+        const std::string d = compare(expected, fresh, tolerance_of(group, test));
+        if (!d.empty())
+          throw DomainError(file + " tcId " + test.at("tcId").dump() + " (" + provenance +
+                            " provenance, not rewritten): " + d);
+      } else {
+        expected = fresh;
+      }
+    }
+  }
+  out["numberOfTests"] = n;
+  return out;
+}
+
+std::string canonical_text(const Json& doc) { return doc.dump(2) + "\n"; }
+
+}  // namespace pathref::golden

@@ -1,0 +1,54 @@
+#pragma once
+/// \file runner.hpp
+/// The generic golden-vector runner (spec/golden-format.md): checks the library against every
+/// golden file through the rule registry, and regenerates expected values on request.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace pathref::golden {
+
+using Json = nlohmann::json;
+
+enum class Status { pass, fail, skipped };
+
+struct CaseResult {
+  std::string file;
+  std::string rule;
+  long long tc_id = 0;
+  Status status = Status::pass;
+  std::string message;  ///< why it failed or was skipped
+};
+
+struct Report {
+  std::vector<CaseResult> cases;
+  [[nodiscard]] std::size_t count(Status s) const;
+};
+
+/// The input a rule sees for one test: group params, then the test's input over them, then the
+/// interpretation options (note "param" := chosen option).
+[[nodiscard]] Json compose_input(const Json& doc, const Json& group, const Json& test);
+
+/// Tolerant comparison of an expected value with an actual one (numbers within
+/// max(abs, rel*|expected|); integers, strings, booleans exactly; arrays/objects recursively).
+/// Returns an empty string on match, else a description of the first difference.
+[[nodiscard]] std::string compare(const Json& expected, const Json& actual, const Json& tolerance,
+                                  const std::string& where = "");
+
+/// Checks one parsed golden document. `file` is only used in messages.
+[[nodiscard]] Report check_document(const Json& doc, const std::string& file);
+/// Checks every *.json file under `dir` (recursively), skipping schema/.
+[[nodiscard]] Report check_directory(const std::filesystem::path& dir);
+
+/// Recomputes expected values of a document with the library (see spec/golden-format.md,
+/// "Regeneration"): fills every null `expected`, rewrites characterization groups, and
+/// verifies (never rewrites) hand- and paper-provenance groups. Throws pathref::Error when a
+/// verified group disagrees. Returns the new document.
+[[nodiscard]] Json regenerate_document(const Json& doc, const std::string& file);
+
+/// Canonical text of a golden document (2-space indent, trailing newline).
+[[nodiscard]] std::string canonical_text(const Json& doc);
+
+}  // namespace pathref::golden

@@ -1,0 +1,10 @@
+#include "pathref/rules/modules.hpp"
+
+namespace pathref::rules {
+void register_all_modules(Registry& r) {
+  register_rng_rules(r);
+  register_grid_rules(r);
+  register_metrics_rules(r);
+  register_search_rules(r);
+}
+}  // namespace pathref::rules

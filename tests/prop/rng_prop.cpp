@@ -1,0 +1,85 @@
+// spec: rng.index, rng.roulette, rng.bernoulli, rng.res53
+#include <catch2/catch.hpp>
+#include <rapidcheck/catch.h>
+
+#include <cmath>
+#include <vector>
+
+#include "pathref/rng/draws.hpp"
+#include "pathref/rng/mt19937.hpp"
+
+using namespace pathref;
+
+namespace {
+/// A double in [0, 1) that is a multiple of 2^-53, as res53 produces.
+rc::Gen<double> unit_draw() {
+  return rc::gen::map(rc::gen::inRange<std::uint64_t>(0, std::uint64_t{1} << 53),
+                      [](std::uint64_t k) { return static_cast<double>(k) * 0x1p-53; });
+}
+}  // namespace
+
+TEST_CASE("prop_res53_in_unit_interval", "[rng][prop]") {
+  rc::prop("res53 lies in [0,1)", [](std::uint32_t a, std::uint32_t b) {
+    const double u = rng::res53(a, b);
+    RC_ASSERT(u >= 0.0);
+    RC_ASSERT(u < 1.0);
+  });
+}
+
+TEST_CASE("prop_stream_is_deterministic", "[rng][prop]") {
+  rc::prop("two streams with one seed agree", [](std::uint32_t seed) {
+    rng::Stream a(seed), b(seed);
+    for (int i = 0; i < 16; ++i) RC_ASSERT(a.next_double() == b.next_double());
+  });
+}
+
+TEST_CASE("prop_index_in_range_and_monotone", "[rng][prop]") {
+  rc::prop("floor(u*n) in [0,n), monotone in u", [] {
+    const auto n = *rc::gen::inRange<std::size_t>(1, 1000000);
+    const double u1 = *unit_draw();
+    const double u2 = *unit_draw();
+    const auto k1 = rng::uniform_index(u1, n);
+    const auto k2 = rng::uniform_index(u2, n);
+    RC_ASSERT(k1 < n);
+    if (u1 <= u2) RC_ASSERT(k1 <= k2);
+  });
+}
+
+TEST_CASE("prop_roulette_picks_positive_weight_at_the_cumsum_crossing", "[rng][prop]") {
+  rc::prop("choice is the first crossing of u*sum", [] {
+    const auto w = *rc::gen::nonEmpty(rc::gen::container<std::vector<double>>(
+        rc::gen::map(rc::gen::inRange(0, 5), [](int k) { return static_cast<double>(k) * 0.25; })));
+    double total = 0.0;
+    for (double x : w) total += x;
+    RC_PRE(total > 0.0);
+    const double u = *unit_draw();
+    const auto k = rng::roulette(w, u);
+    RC_ASSERT(k < w.size());
+    RC_ASSERT(w[k] > 0.0);
+    double before = 0.0;
+    for (std::size_t i = 0; i < k; ++i) before += w[i];
+    RC_ASSERT(before + w[k] >= u * total);
+    // No earlier positive weight already reaches the target.
+    double c = 0.0;
+    for (std::size_t i = 0; i < k; ++i) {
+      c += w[i];
+      if (w[i] > 0.0) RC_ASSERT(c < u * total);
+    }
+  });
+}
+
+TEST_CASE("prop_roulette_frequencies_follow_weights", "[rng][prop]") {
+  // Statistical oracle with a fixed stream: 200000 draws over weights 1:2:3:4. The chi-square
+  // statistic with 3 degrees of freedom stays under 16.27 (p = 0.001) for a correct roulette.
+  const std::vector<double> w{1.0, 2.0, 3.0, 4.0};
+  std::vector<double> counts(4, 0.0);
+  rng::Stream s(2024);
+  const int n = 200000;
+  for (int i = 0; i < n; ++i) counts[rng::roulette(w, s.next_double())] += 1.0;
+  double chi2 = 0.0;
+  for (std::size_t k = 0; k < 4; ++k) {
+    const double e = n * w[k] / 10.0;
+    chi2 += (counts[k] - e) * (counts[k] - e) / e;
+  }
+  CHECK(chi2 < 16.27);
+}

@@ -1,0 +1,20 @@
+#!/usr/bin/env bash
+# Installs the Debian bookworm packages pathref needs, only those missing (apt-get, as root).
+# Sourced by tools/demo and tools/test; safe to run again.
+set -euo pipefail
+PATHREF_PACKAGES=(cmake ninja-build g++ clang libclang-rt-14-dev python3
+  libeigen3-dev librapidcheck-dev catch2 libcgal-dev libgmp-dev libmpfr-dev
+  libfmt-dev nlohmann-json3-dev libcli11-dev libbenchmark-dev)
+missing=()
+for p in "${PATHREF_PACKAGES[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]})); then
+  echo "pathref: installing missing packages: ${missing[*]}"
+  if [[ $(id -u) -ne 0 ]]; then
+    echo "pathref: need root to apt-get install ${missing[*]}" >&2
+    exit 2
+  fi
+  apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi
