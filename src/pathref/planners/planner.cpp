@@ -1,0 +1,44 @@
+#include "pathref/planners/planner.hpp"
+
+#include <algorithm>
+
+#include "pathref/core/error.hpp"
+#include "pathref/planners/registry_list.hpp"
+
+namespace pathref::planners {
+
+const std::vector<Planner>& planners() {
+  static const std::vector<Planner> all = [] {
+    std::vector<Planner> v = all_planners();
+    std::sort(v.begin(), v.end(), [](const Planner& a, const Planner& b) { return a.name < b.name; });
+    return v;
+  }();
+  return all;
+}
+
+const Planner* find_planner(std::string_view name) {
+  for (const Planner& p : planners())
+    if (p.name == name) return &p;
+  return nullptr;
+}
+
+Json merge_params(const Json& defaults, const Json& overrides) {
+  Json out = defaults;
+  for (const auto& [k, v] : overrides.items()) {
+    if (!defaults.contains(k)) {
+      std::string known;
+      for (const auto& [dk, dv] : defaults.items()) known += (known.empty() ? "" : ", ") + dk;
+      throw UsageError("unknown parameter '" + k + "' (known: " + (known.empty() ? "none" : known) + ")");
+    }
+    const Json& d = defaults.at(k);
+    const bool same_kind = (d.is_number() && v.is_number() &&
+                            (!d.is_number_integer() || v.is_number_integer())) ||
+                           (d.type() == v.type());
+    if (!same_kind)
+      throw UsageError("parameter '" + k + "' must be of the same type as its default " + d.dump());
+    out[k] = v;
+  }
+  return out;
+}
+
+}  // namespace pathref::planners

@@ -1,0 +1,60 @@
+#pragma once
+/// \file planner.hpp
+/// The common shape of every planner: a request (map, start, goal, corner policy, seed, named
+/// parameters) and a result (path, metrics, per-iteration curves, extra planner-specific data).
+/// Planners are registered by name; `pathref plan --algo NAME` looks them up here.
+/// Spec: spec/cli.md#plan, each planner's own spec file for its parameters and draw order.
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "pathref/grid/grid.hpp"
+
+namespace pathref::planners {
+
+using Json = nlohmann::json;
+
+struct Request {
+  const grid::Grid* grid = nullptr;
+  grid::Cell start;
+  grid::Cell goal;
+  grid::CornerPolicy policy = grid::CornerPolicy::strict;
+  std::uint32_t seed = 1;
+  /// Parameter overrides by name (from --set key=value); every planner validates its own and
+  /// throws UsageError naming an unknown key.
+  Json params = Json::object();
+};
+
+struct Result {
+  bool found = false;
+  std::vector<grid::Cell> path;  ///< start ... goal, empty when !found
+  double length = 0.0;           ///< sum of step costs (metrics.length)
+  std::int64_t expansions = 0;   ///< nodes expanded (search planners); 0 otherwise
+  std::int64_t iterations = 0;   ///< iterations run (iterative planners); 0 otherwise
+  std::vector<double> best_per_iteration;  ///< best-so-far length after each iteration
+  std::vector<double> mean_per_iteration;  ///< mean length of the iteration's solutions
+  Json params_used = Json::object();       ///< every parameter value used, defaults included
+  Json extra = Json::object();             ///< planner-specific output (e.g. winning phase)
+};
+
+struct Planner {
+  std::string name;         ///< --algo value, e.g. "astar"
+  std::string description;  ///< one line, with the paper it follows
+  Json defaults;            ///< parameter name -> default value
+  std::function<Result(const Request&)> run;
+};
+
+/// Every registered planner, sorted by name.
+[[nodiscard]] const std::vector<Planner>& planners();
+/// nullptr if unknown.
+[[nodiscard]] const Planner* find_planner(std::string_view name);
+
+/// defaults overlaid with request.params; UsageError for a key not in defaults or a value of
+/// another JSON type than its default.
+[[nodiscard]] Json merge_params(const Json& defaults, const Json& overrides);
+
+}  // namespace pathref::planners
