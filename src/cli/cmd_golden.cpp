@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <utility>
 #include <vector>
 
 #include "commands.hpp"
@@ -58,18 +59,21 @@ void add_golden_command(CLI::App& app, Action& run) {
   regen->add_option("dir", regen_dir, "golden directory")->capture_default_str();
   regen->callback([&run] {
     run = [] {
-      std::size_t changed = 0;
+      // Two phases: compute every file first, write only when all succeeded, so a hand-value
+      // mismatch in one file never leaves the directory half rewritten.
+      std::vector<std::pair<fs::path, std::string>> rewrites;
       for (const auto& p : golden_files(regen_dir)) {
         std::ifstream in(p);
         const std::string before{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
         const auto doc = golden::Json::parse(before);
-        const std::string after = golden::canonical_text(golden::regenerate_document(doc, p.string()));
-        if (before != after) {
-          std::ofstream(p) << after;
-          fmt::print("rewrote {}\n", p.string());
-          ++changed;
-        }
+        std::string after = golden::canonical_text(golden::regenerate_document(doc, p.string()));
+        if (before != after) rewrites.emplace_back(p, std::move(after));
       }
+      for (const auto& [p, text] : rewrites) {
+        std::ofstream(p) << text;
+        fmt::print("rewrote {}\n", p.string());
+      }
+      const std::size_t changed = rewrites.size();
       fmt::print("golden regenerate: {} file(s) changed; review with git diff\n", changed);
       return 0;
     };

@@ -1,6 +1,317 @@
-// `pathref plan` and `pathref maps` (filled in by the planning/CLI work).
+// `pathref plan` (run one planner on one map, print / write JSON / draw SVG) and `pathref maps`
+// (list the built-in maps, print one as pathref-grid text). Spec: spec/cli.md#plan, #maps.
+#include <fmt/core.h>
+
+#include <cstdint>
+#include <fstream>
+#include <optional>
+#include <string>
+#include <vector>
+
 #include "commands.hpp"
+#include "pathref/core/error.hpp"
+#include "pathref/io/builtin_maps.hpp"
+#include "pathref/io/grid_text.hpp"
+#include "pathref/io/plan_json.hpp"
+#include "pathref/io/svg.hpp"
+#include "pathref/planners/planner.hpp"
 
 namespace pathref::cli {
-void add_plan_commands(CLI::App& /*app*/, Action& /*run*/) {}
+
+namespace {
+
+using Json = planners::Json;
+
+/// Everything `pathref plan` was given on the command line.
+struct PlanOptions {
+  std::string map_file;
+  std::string builtin;
+  std::string algo;
+  std::string start;
+  std::string goal;
+  std::uint32_t seed = 1;
+  std::string policy = "strict";
+  std::vector<std::string> sets;
+  bool json = false;
+  std::string json_out;
+  std::string svg;
+};
+
+/// "X,Y" with X and Y non-negative decimal integers (at most 18 digits) -> Cell; UsageError
+/// naming `option` otherwise.
+grid::Cell parse_cell_arg(const std::string& text, const char* option) {
+  const auto bad = [&] {
+    return UsageError(fmt::format("{} expects X,Y (two non-negative integers), got '{}'", option, text));
+  };
+  const auto comma = text.find(',');
+  if (comma == std::string::npos) throw bad();
+  const auto number = [&](const std::string& s) {
+    if (s.empty() || s.size() > 18) throw bad();
+    std::int64_t v = 0;
+    for (const char c : s) {
+      if (c < '0' || c > '9') throw bad();
+      v = v * 10 + (c - '0');
+    }
+    return v;
+  };
+  return grid::Cell{number(text.substr(0, comma)), number(text.substr(comma + 1))};
+}
+
+/// --set key=value ...: the value is JSON when it parses as JSON, otherwise a plain string (the
+/// same rule as `pathref eval`). UsageError for a missing '=', an empty key or a repeated key.
+Json parse_sets(const std::vector<std::string>& sets) {
+  Json out = Json::object();
+  for (const std::string& a : sets) {
+    const auto eq = a.find('=');
+    if (eq == std::string::npos || eq == 0)
+      throw UsageError("--set expects key=value, got '" + a + "'");
+    const std::string key = a.substr(0, eq);
+    if (out.contains(key)) throw UsageError("--set " + key + " given more than once");
+    const std::string text = a.substr(eq + 1);
+    Json value = Json::parse(text, nullptr, /*allow_exceptions=*/false);
+    out[key] = value.is_discarded() ? Json(text) : value;
+  }
+  return out;
+}
+
+/// A parameter value as --set would accept it back: strings bare unless they would parse as
+/// JSON, everything else as JSON.
+std::string set_syntax(const Json& v) {
+  if (v.is_string()) {
+    const auto& s = v.get_ref<const std::string&>();
+    return Json::parse(s, nullptr, false).is_discarded() ? s : v.dump();
+  }
+  return v.dump();
+}
+
+/// One line saying what the corner policy allows (spec/grid.md grid.corner-policy).
+const char* policy_meaning(grid::CornerPolicy p) {
+  switch (p) {
+    case grid::CornerPolicy::never: return "4-connected, no diagonal moves";
+    case grid::CornerPolicy::strict: return "diagonal needs both orthogonal neighbours free";
+    case grid::CornerPolicy::one: return "diagonal needs at least one orthogonal neighbour free";
+    case grid::CornerPolicy::always: return "diagonal allowed between any two free cells";
+  }
+  return "";
+}
+
+/// Checks that an endpoint is a free cell of the map; UsageError naming the option otherwise.
+void check_endpoint(const grid::Grid& g, grid::Cell c, const char* which) {
+  if (!g.in_bounds(c))
+    throw UsageError(fmt::format("{} ({}, {}) is outside the {}x{} map", which, c.x, c.y, g.width(),
+                                 g.height()));
+  if (g.blocked(c))
+    throw UsageError(fmt::format("{} ({}, {}) is a blocked cell", which, c.x, c.y));
+}
+
+/// Writes text to a file; UsageError when it cannot be written.
+void write_text_file(const std::string& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary);
+  out << text;
+  out.close();
+  if (!out) throw UsageError("cannot write '" + path + "'");
+}
+
+/// The map of the run and where it came from.
+struct LoadedMap {
+  io::MapFile map;
+  io::MapSource source;
+};
+
+LoadedMap load_map(const PlanOptions& o) {
+  if (o.map_file.empty() == o.builtin.empty())
+    throw UsageError("give exactly one of --map FILE or --builtin NAME (see pathref maps)");
+  if (!o.builtin.empty()) {
+    const io::BuiltinMap* b = io::find_builtin_map(o.builtin);
+    if (b == nullptr)
+      throw UsageError(fmt::format("unknown built-in map '{}' (known: {})", o.builtin,
+                                   io::builtin_map_names()));
+    return {io::load_builtin_map(*b), io::MapSource{"builtin", std::string(b->name), std::nullopt}};
+  }
+  io::MapFile m = io::read_grid_file(o.map_file);
+  const std::string name = m.name.empty() ? o.map_file : m.name;
+  return {std::move(m), io::MapSource{"file", name, o.map_file}};
+}
+
+/// The endpoint from the option if given, else the map's own; UsageError if neither.
+grid::Cell endpoint(const std::string& option_value, const std::optional<grid::Cell>& from_map,
+                    const char* option, const char* which) {
+  if (!option_value.empty()) return parse_cell_arg(option_value, option);
+  if (from_map) return *from_map;
+  throw UsageError(fmt::format("the map defines no {0}: give {1} X,Y", which, option));
+}
+
+std::string cells_text(const std::vector<grid::Cell>& path) {
+  std::string out;
+  for (const auto& c : path) out += fmt::format("{}({},{})", out.empty() ? "" : " ", c.x, c.y);
+  return out;
+}
+
+/// The human-readable report of a run: what was used, then what came out.
+void print_report(const io::PlanRecord& rec, const grid::Grid& g, const Json& j) {
+  fmt::print("pathref {} plan\n", PATHREF_VERSION);
+  fmt::print("  map         {} ({}{}, {}x{}, {} blocked cells)\n", rec.map.name, rec.map.kind,
+             rec.map.file ? " " + *rec.map.file : std::string(), g.width(), g.height(),
+             g.blocked_count());
+  fmt::print("  algo        {}\n", rec.algo);
+  fmt::print("  policy      {} ({})\n", grid::to_string(rec.policy), policy_meaning(rec.policy));
+  fmt::print("  seed        {}\n", rec.seed);
+  std::string params;
+  for (const auto& [k, v] : rec.params.items())
+    params += (params.empty() ? "" : " ") + k + "=" + set_syntax(v);
+  fmt::print("  params      {}\n", params.empty() ? "(none)" : params);
+  fmt::print("  start       ({}, {})\n", rec.start.x, rec.start.y);
+  fmt::print("  goal        ({}, {})\n", rec.goal.x, rec.goal.y);
+  const planners::Result& r = rec.result;
+  fmt::print("result\n");
+  fmt::print("  found       {}\n", r.found ? "yes" : "no (the goal is not reachable)");
+  if (r.found) {
+    fmt::print("  length      {}\n", r.length);
+    fmt::print("  turns       {}\n", j.at("turns").get<std::int64_t>());
+    fmt::print("  cells       {}\n", r.path.size());
+    fmt::print("  valid       {} ({})\n", j.at("valid").get<bool>() ? "yes" : "NO",
+               j.at("validation").get<std::string>());
+  }
+  fmt::print("  expansions  {}\n", r.expansions);
+  fmt::print("  iterations  {}\n", r.iterations);
+  if (!r.best_per_iteration.empty()) {
+    const Json& conv = j.at("converged_at");
+    fmt::print("  converged   {}\n", conv.is_null() ? std::string("(no solution)")
+                                                    : "at iteration " + conv.dump());
+  }
+  if (!r.extra.empty()) fmt::print("  extra       {}\n", r.extra.dump());
+  if (r.found) fmt::print("  path        {}\n", cells_text(r.path));
+}
+
+/// The SVG figure: the map with the path (and, for iterative planners, the convergence curves of
+/// the best and mean length per iteration).
+std::string plan_svg(const io::PlanRecord& rec, const grid::Grid& g, const Json& j) {
+  const planners::Result& r = rec.result;
+  const std::string label =
+      r.found ? fmt::format("{} (length {:.2f}, {} turns)", rec.algo, r.length,
+                            j.at("turns").get<std::int64_t>())
+              : rec.algo;
+  const std::vector<io::PathLayer> layers{{label, r.found ? r.path : std::vector<grid::Cell>{}}};
+  const std::string title = fmt::format("{} {}x{}: {}, policy {}, seed {}", rec.map.name, g.width(),
+                                        g.height(), rec.algo, grid::to_string(rec.policy), rec.seed);
+  if (r.best_per_iteration.empty()) return io::svg_map(g, rec.start, rec.goal, layers, title);
+  std::vector<io::Series> series;
+  const auto curve = [](std::string name, const std::vector<double>& y) {
+    io::Series s{std::move(name), {}, y};
+    for (std::size_t i = 0; i < y.size(); ++i) s.x.push_back(static_cast<double>(i + 1));
+    return s;
+  };
+  series.push_back(curve(rec.algo + " best", r.best_per_iteration));
+  if (!r.mean_per_iteration.empty()) series.push_back(curve(rec.algo + " mean", r.mean_per_iteration));
+  return io::svg_map_and_chart(g, rec.start, rec.goal, layers, title, series,
+                               io::ChartOptions{"Convergence", "iteration", "path length"});
+}
+
+/// `pathref plan`: exit 0 when a path was found, 1 when the goal is unreachable.
+int run_plan(const PlanOptions& o) {
+  const planners::Planner* planner = planners::find_planner(o.algo);
+  if (planner == nullptr) {
+    std::string known;
+    for (const auto& p : planners::planners()) known += (known.empty() ? "" : ", ") + p.name;
+    throw UsageError(fmt::format("unknown --algo '{}' (known: {})", o.algo,
+                                 known.empty() ? "none registered" : known));
+  }
+  const Json overrides = parse_sets(o.sets);
+  // Validates every --set key and type before anything runs (UsageError names a bad key).
+  const Json merged = planners::merge_params(planner->defaults, overrides);
+  const LoadedMap lm = load_map(o);
+  const grid::Grid& g = lm.map.grid;
+  const grid::Cell start = endpoint(o.start, lm.map.start, "--start", "start");
+  const grid::Cell goal = endpoint(o.goal, lm.map.goal, "--goal", "goal");
+  check_endpoint(g, start, "start");
+  check_endpoint(g, goal, "goal");
+
+  planners::Request req;
+  req.grid = &g;
+  req.start = start;
+  req.goal = goal;
+  req.policy = grid::parse_corner_policy(o.policy);
+  req.seed = o.seed;
+  req.params = overrides;
+  io::PlanRecord rec{o.algo, o.seed, req.policy, lm.source, start, goal, merged, planner->run(req)};
+  if (!rec.result.params_used.empty()) rec.params = rec.result.params_used;
+
+  const Json j = io::plan_to_json(rec, g);
+  // Files first: a file that cannot be written is an error (exit 2) before anything is printed.
+  if (!o.json_out.empty()) write_text_file(o.json_out, j.dump(2) + "\n");
+  if (!o.svg.empty()) write_text_file(o.svg, plan_svg(rec, g, j));
+  if (o.json)
+    fmt::print("{}\n", j.dump(2));
+  else
+    print_report(rec, g, j);
+  if (!o.json) {
+    if (!o.json_out.empty()) fmt::print("wrote {}\n", o.json_out);
+    if (!o.svg.empty()) fmt::print("wrote {}\n", o.svg);
+  }
+  return rec.result.found ? 0 : 1;
+}
+
+/// "(x, y)" or "-" for an endpoint a map does not define.
+std::string endpoint_text(const std::optional<grid::Cell>& c) {
+  return c ? fmt::format("({}, {})", c->x, c->y) : std::string("-");
+}
+
+/// `pathref maps [NAME] [--svg FILE]`: the table of built-ins, or one map's pathref-grid 1 text
+/// (and its drawing).
+int run_maps(const std::string& name, const std::string& svg) {
+  if (name.empty()) {
+    if (!svg.empty()) throw UsageError("maps --svg needs a map NAME");
+    for (const io::BuiltinMap& b : io::builtin_maps()) {
+      const io::MapFile m = io::load_builtin_map(b);
+      fmt::print("{}  {}x{}  start {}  goal {}  {} blocked cells\n", b.name, m.grid.width(),
+                 m.grid.height(), endpoint_text(m.start), endpoint_text(m.goal), m.grid.blocked_count());
+      fmt::print("    {}\n    source: {}\n", b.description, b.provenance);
+    }
+    return 0;
+  }
+  const io::BuiltinMap* b = io::find_builtin_map(name);
+  if (b == nullptr)
+    throw UsageError(fmt::format("unknown built-in map '{}' (known: {})", name, io::builtin_map_names()));
+  fmt::print("{}", b->text);
+  if (!svg.empty()) {
+    const io::MapFile m = io::load_builtin_map(*b);
+    write_text_file(svg, io::svg_map(m.grid, m.start, m.goal, {},
+                                     fmt::format("{} {}x{}", b->name, m.grid.width(), m.grid.height())));
+  }
+  return 0;
+}
+
+}  // namespace
+
+void add_plan_commands(CLI::App& app, Action& run) {
+  static PlanOptions o;
+  std::string algos;
+  for (const auto& p : planners::planners()) algos += (algos.empty() ? "" : ", ") + p.name;
+  auto* plan = app.add_subcommand(
+      "plan", "Run one planner on one map; print the path, its metrics, the seed and every parameter");
+  auto* map_opt = plan->add_option("--map", o.map_file, "map file in pathref-grid 1 format (spec/formats.md)");
+  auto* builtin_opt = plan->add_option("--builtin", o.builtin, "built-in map name (see pathref maps)");
+  map_opt->excludes(builtin_opt);
+  plan->add_option("--algo", o.algo, "planner: " + (algos.empty() ? std::string("(none registered)") : algos))
+      ->required();
+  plan->add_option("--start", o.start, "start cell X,Y (default: the map's start)");
+  plan->add_option("--goal", o.goal, "goal cell X,Y (default: the map's goal)");
+  plan->add_option("--seed", o.seed, "seed of the random stream (spec/rng.md)")->capture_default_str();
+  plan->add_option("--policy", o.policy, "corner policy for diagonal moves (spec/grid.md)")
+      ->check(CLI::IsMember({"never", "strict", "one", "always"}))
+      ->capture_default_str();
+  plan->add_option("--set", o.sets, "planner parameter key=value (repeatable; value JSON or plain string)");
+  plan->add_flag("--json", o.json, "print one JSON object (schema pathref-plan 1) instead of the report");
+  plan->add_option("--json-out", o.json_out, "also write the JSON object to FILE");
+  plan->add_option("--svg", o.svg, "write an SVG figure: map, obstacles, S, T, path, legend (+ convergence)");
+  plan->callback([&run] { run = [] { return run_plan(o); }; });
+
+  auto* maps = app.add_subcommand("maps", "List the built-in maps, or print one as pathref-grid 1 text");
+  static std::string show;
+  static std::string show_svg;
+  maps->add_option("name", show, "print this built-in map as pathref-grid 1 text");
+  maps->add_option("--svg", show_svg, "with NAME: also draw the map (S, T, obstacles) to FILE");
+  maps->callback([&run] { run = [] { return run_maps(show, show_svg); }; });
+}
+
 }  // namespace pathref::cli

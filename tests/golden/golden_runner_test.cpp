@@ -53,3 +53,38 @@ TEST_CASE("golden: every registered rule has a golden file", "[golden][traceabil
     CHECK(covered);
   }
 }
+
+TEST_CASE("golden: canonical_text is Python's json.dumps(indent=2, sort_keys=True)", "[golden]") {
+  // tools/golden-lint requires exactly this text; floats follow Python's repr, not nlohmann's
+  // Grisu2 (which is not always shortest and switches to exponent form from 1e15 on).
+  const Json doc = Json::parse(R"({"b": [1e15, 3705226666457467.5, 754468566810601.2, 1e16, 1e-5,
+      0.0001, 0.0, -0.0, 5e-324, 0.1, 2, -3, 1.7976931348623157e308, 5.31652058774973e+16],
+      "a": {"x": "\u00e9\n", "e": [], "o": {}}, "c": true, "d": null})");
+  const std::string expected =
+      "{\n"
+      "  \"a\": {\n"
+      "    \"e\": [],\n"
+      "    \"o\": {},\n"
+      "    \"x\": \"\xc3\xa9\\n\"\n"
+      "  },\n"
+      "  \"b\": [\n"
+      "    1000000000000000.0,\n"
+      "    3705226666457467.5,\n"
+      "    754468566810601.2,\n"
+      "    1e+16,\n"
+      "    1e-05,\n"
+      "    0.0001,\n"
+      "    0.0,\n"
+      "    -0.0,\n"
+      "    5e-324,\n"
+      "    0.1,\n"
+      "    2,\n"
+      "    -3,\n"
+      "    1.7976931348623157e+308,\n"
+      "    5.31652058774973e+16\n"
+      "  ],\n"
+      "  \"c\": true,\n"
+      "  \"d\": null\n"
+      "}\n";
+  CHECK(pathref::golden::canonical_text(doc) == expected);
+}

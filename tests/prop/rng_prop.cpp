@@ -83,3 +83,14 @@ TEST_CASE("prop_roulette_frequencies_follow_weights", "[rng][prop]") {
   }
   CHECK(chi2 < 16.27);
 }
+
+TEST_CASE("prop_bernoulli_is_u_below_p", "[rng][prop]") {
+  rc::prop("bernoulli(u, p) == (u < p); p = 0 never, p = 1 always", [] {
+    const double u = *unit_draw();
+    const double p = *rc::gen::map(rc::gen::inRange<std::uint64_t>(0, (std::uint64_t{1} << 53) + 1),
+                                   [](std::uint64_t k) { return static_cast<double>(k) * 0x1p-53; });
+    RC_ASSERT(rng::bernoulli(u, p) == (u < p));
+    RC_ASSERT(!rng::bernoulli(u, 0.0));
+    RC_ASSERT(rng::bernoulli(u, 1.0));
+  });
+}

@@ -1,6 +1,7 @@
 #include "pathref/golden/runner.hpp"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -270,6 +271,89 @@ Json regenerate_document(const Json& doc, const std::string& file) {
   return out;
 }
 
-std::string canonical_text(const Json& doc) { return doc.dump(2) + "\n"; }
+namespace {
+
+/// A finite double exactly as Python's repr() writes it (the shortest digits that round-trip,
+/// nearest to the value; exponent form when the decimal exponent is < -4 or >= 16, else plain
+/// with at least one fractional digit). nlohmann's dump() differs: its Grisu2 digits are not
+/// always the shortest, and it switches to exponent form from 1e15 on.
+std::string python_float_repr(double v) {
+  char buf[64];
+  const auto r = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::scientific);
+  const std::string sci(buf, r.ptr);  // [-]d[.ddd]e[+-]XX, shortest round-trip digits
+  const std::size_t epos = sci.find('e');
+  std::string mant = sci.substr(0, epos);
+  const int exp10 = std::stoi(sci.substr(epos + 1));
+  std::string sign;
+  if (!mant.empty() && mant[0] == '-') {
+    sign = "-";
+    mant.erase(0, 1);
+  }
+  std::string digits;
+  for (const char c : mant)
+    if (c != '.') digits.push_back(c);
+  const int ndigits = static_cast<int>(digits.size());
+  const int decpt = exp10 + 1;  // position of the decimal point after the first digit
+  if (decpt <= -4 || decpt > 16) {
+    std::string out = sign + digits.substr(0, 1);
+    if (ndigits > 1) out += "." + digits.substr(1);
+    const int a = exp10 < 0 ? -exp10 : exp10;
+    out += exp10 < 0 ? "e-" : "e+";
+    if (a < 10) out += "0";
+    return out + std::to_string(a);
+  }
+  if (decpt <= 0) return sign + "0." + std::string(static_cast<std::size_t>(-decpt), '0') + digits;
+  if (decpt < ndigits)
+    return sign + digits.substr(0, static_cast<std::size_t>(decpt)) + "." +
+           digits.substr(static_cast<std::size_t>(decpt));
+  return sign + digits + std::string(static_cast<std::size_t>(decpt - ndigits), '0') + ".0";
+}
+
+void write_canonical(const Json& v, int depth, std::string& out) {
+  const std::string indent(static_cast<std::size_t>(2 * (depth + 1)), ' ');
+  const std::string close(static_cast<std::size_t>(2 * depth), ' ');
+  if (v.is_object()) {
+    if (v.empty()) {
+      out += "{}";
+      return;
+    }
+    out += "{\n";
+    bool first = true;
+    for (const auto& [k, x] : v.items()) {  // std::map: keys in byte (= code point) order
+      if (!first) out += ",\n";
+      first = false;
+      out += indent + Json(k).dump() + ": ";
+      write_canonical(x, depth + 1, out);
+    }
+    out += "\n" + close + "}";
+  } else if (v.is_array()) {
+    if (v.empty()) {
+      out += "[]";
+      return;
+    }
+    out += "[\n";
+    for (std::size_t i = 0; i < v.size(); ++i) {
+      if (i > 0) out += ",\n";
+      out += indent;
+      write_canonical(v[i], depth + 1, out);
+    }
+    out += "\n" + close + "]";
+  } else if (v.is_number_float()) {
+    const double d = v.get<double>();
+    if (!std::isfinite(d))
+      throw UsageError("non-finite number in a golden document: write \"inf\", \"-inf\" or \"nan\"");
+    out += python_float_repr(d);
+  } else {
+    out += v.dump();  // integers, strings (UTF-8 kept, control characters escaped), bools, null
+  }
+}
+
+}  // namespace
+
+std::string canonical_text(const Json& doc) {
+  std::string out;
+  write_canonical(doc, 0, out);
+  return out + "\n";
+}
 
 }  // namespace pathref::golden

@@ -48,7 +48,9 @@ struct Report {
 /// verified group disagrees. Returns the new document.
 [[nodiscard]] Json regenerate_document(const Json& doc, const std::string& file);
 
-/// Canonical text of a golden document (2-space indent, trailing newline).
+/// Canonical text of a golden document: byte for byte Python's
+/// `json.dumps(doc, indent=2, sort_keys=True, ensure_ascii=False) + "\n"` (floats as Python's
+/// repr: shortest round-trip digits), which tools/golden-lint requires (spec/golden-format.md).
 [[nodiscard]] std::string canonical_text(const Json& doc);
 
 }  // namespace pathref::golden

@@ -27,9 +27,27 @@ std::string_view to_string(CornerPolicy policy) noexcept {
   return "strict";
 }
 
-Grid::Grid(std::int64_t width, std::int64_t height) : width_(width), height_(height) {
+namespace {
+void require_dimensions(std::int64_t width, std::int64_t height) {
   require(width >= 1 && height >= 1, "grid width and height must be at least 1");
-  require(width <= max_cells / height, "grid has more cells than Grid::max_cells");
+  require(width <= Grid::max_cells / height, "grid has more cells than Grid::max_cells");
+}
+}  // namespace
+
+std::int64_t cell_index(Cell c, std::int64_t width, std::int64_t height) {
+  require_dimensions(width, height);
+  require(c.x >= 0 && c.y >= 0 && c.x < width && c.y < height, "cell outside the grid");
+  return c.y * width + c.x;
+}
+
+Cell index_cell(std::int64_t i, std::int64_t width, std::int64_t height) {
+  require_dimensions(width, height);
+  require(i >= 0 && i < width * height, "cell index outside [0, W*H)");
+  return Cell{i % width, i / width};
+}
+
+Grid::Grid(std::int64_t width, std::int64_t height) : width_(width), height_(height) {
+  require_dimensions(width, height);
   blocked_.assign(static_cast<std::size_t>(width * height), 0);
 }
 
@@ -62,15 +80,9 @@ std::vector<std::string> Grid::to_rows_top_first() const {
   return rows;
 }
 
-std::int64_t Grid::index(Cell c) const {
-  require(in_bounds(c), "cell outside the grid");
-  return c.y * width_ + c.x;
-}
+std::int64_t Grid::index(Cell c) const { return cell_index(c, width_, height_); }
 
-Cell Grid::cell(std::int64_t i) const {
-  require(i >= 0 && i < cell_count(), "cell index outside [0, W*H)");
-  return Cell{i % width_, i / width_};
-}
+Cell Grid::cell(std::int64_t i) const { return index_cell(i, width_, height_); }
 
 bool Grid::blocked(Cell c) const {
   return blocked_[static_cast<std::size_t>(index(c))] != 0;

@@ -2,7 +2,8 @@
 /// \file grid.hpp
 /// The grid model shared by every planner: a W x H occupancy grid, cells (x, y) 0-based with
 /// (0, 0) at the lower left, cell index i = y * W + x (Shi et al. 2022, Figure 1A numbering).
-/// Spec: spec/grid.md (grid.model, grid.index, grid.moves, grid.corner-policy, grid.neighbour-order)
+/// Spec: spec/grid.md (grid.encoding, grid.index, grid.coord, grid.moves, grid.corner-policy,
+/// grid.neighbour-order)
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -29,8 +30,20 @@ enum class CornerPolicy {
 };
 
 /// "never" | "strict" | "one" | "always" -> policy; UsageError on anything else.
+/// Spec: grid.corner-policy.
 [[nodiscard]] CornerPolicy parse_corner_policy(std::string_view name);
 [[nodiscard]] std::string_view to_string(CornerPolicy policy) noexcept;
+
+/// Cell index i = y * W + x on a W x H grid (Shi et al. 2022 Figure 1A numbering, 0-based:
+/// left to right, bottom to top). Source: Shi et al. 2022 Sec. 3, doi:10.3389/fbioe.2022.905983.
+/// Spec: grid.index. Pre: W, H >= 1, W * H <= Grid::max_cells, 0 <= x < W, 0 <= y < H
+/// (DomainError). Post: 0 <= i < W * H. Golden: golden/grid/grid.index.json
+[[nodiscard]] std::int64_t cell_index(Cell c, std::int64_t width, std::int64_t height);
+
+/// Inverse of cell_index: (i mod W, floor(i / W)). Spec: grid.index.
+/// Pre: W, H >= 1, W * H <= Grid::max_cells, 0 <= i < W * H (DomainError).
+/// Post: cell_index(index_cell(i, W, H), W, H) == i. Golden: golden/grid/grid.index.json
+[[nodiscard]] Cell index_cell(std::int64_t i, std::int64_t width, std::int64_t height);
 
 /// A W x H occupancy grid. Immutable after construction except through set_blocked.
 class Grid {
@@ -39,7 +52,10 @@ class Grid {
   Grid(std::int64_t width, std::int64_t height);
 
   /// From rows of '.' (free) and '#' (blocked), the FIRST string being the TOP row, as a map
-  /// is drawn. Pre: rows non-empty, all the same length, only '.' and '#' (DomainError).
+  /// is drawn: row r is y = H - 1 - r.
+  /// Source: pathref JSON encoding; Shi et al. 2022 Figure 1A origin at the lower left.
+  /// Spec: grid.encoding. Pre: rows non-empty, all the same length >= 1, only '.' and '#',
+  /// W * H <= max_cells (DomainError). Golden: golden/grid/grid.encoding.json
   [[nodiscard]] static Grid from_rows_top_first(const std::vector<std::string>& rows);
   /// Inverse of from_rows_top_first.
   [[nodiscard]] std::vector<std::string> to_rows_top_first() const;
@@ -51,9 +67,11 @@ class Grid {
   [[nodiscard]] bool in_bounds(Cell c) const noexcept {
     return c.x >= 0 && c.y >= 0 && c.x < width_ && c.y < height_;
   }
-  /// i = y * W + x. Pre: in_bounds(c) (DomainError).
+  /// Cell index i = y * W + x: cell_index(c, W, H). Spec: grid.index.
+  /// Pre: in_bounds(c) (DomainError). Post: 0 <= i < W * H.
   [[nodiscard]] std::int64_t index(Cell c) const;
-  /// Inverse of index. Pre: 0 <= i < W * H (DomainError).
+  /// Inverse of index: index_cell(i, W, H) = (i mod W, floor(i / W)). Spec: grid.index.
+  /// Pre: 0 <= i < W * H (DomainError). Post: index(cell(i)) == i.
   [[nodiscard]] Cell cell(std::int64_t i) const;
 
   /// True for a blocked cell. Pre: in_bounds(c).
@@ -80,17 +98,23 @@ struct Move {
   double cost;
 };
 
-/// Whether the single step a -> b is allowed: b is one of a's 8 neighbours, both are free, and
-/// a diagonal step satisfies `policy`. Spec: grid.moves, grid.corner-policy.
+/// Whether the single step a -> b is allowed: b is one of a's 8 neighbours, both are in bounds
+/// and free, and a diagonal step satisfies `policy` about the two orthogonal cells it passes
+/// between (a cell outside the map counts as not free).
+/// Source: Shi et al. 2022 Sec. 3 (8-neighbourhood; corner rule unstated); MovingAI rule = strict.
+/// Spec: grid.corner-policy. Pre: none (never throws). Golden: golden/grid/grid.corner-policy.json
 [[nodiscard]] bool step_allowed(const Grid& g, Cell a, Cell b, CornerPolicy policy) noexcept;
 
 /// Cost of a step between 8-neighbours: the distance between centres, 1 or sqrt(2).
-/// Spec: grid.moves. Pre: a and b are distinct 8-neighbours (DomainError).
+/// Source: Shi et al. 2022 Sec. 3 and Eq. (4). Spec: grid.moves.
+/// Pre: a and b are distinct 8-neighbours (DomainError). Post: 1.0 or std::numbers::sqrt2.
+/// Golden: golden/grid/grid.moves.json
 [[nodiscard]] double step_cost(Cell a, Cell b);
 
-/// The allowed moves out of `c`, in canonical order: increasing cell index (spec rule
-/// grid.neighbour-order). Every random choice among neighbours indexes into this order.
-/// Pre: g.free(c) (DomainError).
+/// The allowed moves out of `c`, in canonical order: increasing cell index. Every random choice
+/// among neighbours indexes into this order.
+/// Spec: grid.neighbour-order. Pre: g.free(c) (DomainError). Post: targets strictly increasing
+/// in cell index, each step_allowed; costs as step_cost. Golden: golden/grid/grid.neighbour-order.json
 [[nodiscard]] std::vector<Move> neighbours(const Grid& g, Cell c, CornerPolicy policy);
 
 }  // namespace pathref::grid

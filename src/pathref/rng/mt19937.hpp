@@ -20,8 +20,9 @@ namespace pathref::rng {
   return static_cast<double>(hi * 67108864ULL + lo) * (1.0 / 9007199254740992.0);
 }
 
-/// The reference stream (spec rule rng.stream). Owns its state; counts the doubles drawn so
-/// that traces can say "draw #k".
+/// The reference stream: MT19937 seeded with init_genrand(seed). Owns its state; counts the
+/// doubles drawn so that traces can say "draw #k".
+/// Spec: rng.stream. Golden: golden/rng/rng.stream.json
 class Stream {
  public:
   /// init_genrand(seed). `std::mt19937` is specified bit-for-bit by [rand.eng.mers], and its
@@ -29,9 +30,11 @@ class Stream {
   explicit Stream(std::uint32_t seed) : engine_(seed), seed_(seed) {}
 
   /// The next 32-bit output (genrand_int32).
+  /// Spec: rng.stream
   [[nodiscard]] std::uint32_t next_u32() { return static_cast<std::uint32_t>(engine_()); }
 
   /// The next double in [0, 1) (genrand_res53): consumes two 32-bit outputs.
+  /// Spec: rng.res53. Post: a multiple of 2^-53 in [0, 1). Golden: golden/rng/rng.res53.json
   [[nodiscard]] double next_double() {
     const std::uint32_t a = next_u32();
     const std::uint32_t b = next_u32();

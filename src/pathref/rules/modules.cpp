@@ -6,5 +6,6 @@ void register_all_modules(Registry& r) {
   register_grid_rules(r);
   register_metrics_rules(r);
   register_search_rules(r);
+  register_mecanum_rules(r);
 }
 }  // namespace pathref::rules

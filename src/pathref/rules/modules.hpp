@@ -9,5 +9,6 @@ void register_rng_rules(Registry& r);
 void register_grid_rules(Registry& r);
 void register_metrics_rules(Registry& r);
 void register_search_rules(Registry& r);
+void register_mecanum_rules(Registry& r);
 void register_all_modules(Registry& r);
 }  // namespace pathref::rules

@@ -1,0 +1,251 @@
+// spec: search.astar, search.dijkstra, search.order, search.admissible, search.h.manhattan, search.h.chebyshev, search.h.octile, search.h.euclidean
+#include <catch2/catch.hpp>
+#include <rapidcheck/catch.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <deque>
+#include <numbers>
+#include <vector>
+
+#include "pathref/equations/heuristics.hpp"
+#include "pathref/equations/metrics.hpp"
+#include "pathref/planners/search.hpp"
+#include "support/generators.hpp"
+
+using namespace pathref;
+using grid::Cell;
+using grid::CornerPolicy;
+using grid::Grid;
+using heuristics::Heuristic;
+
+namespace pathref::heuristics {
+inline void showValue(Heuristic h, std::ostream& os) { os << to_string(h); }
+}  // namespace pathref::heuristics
+
+namespace {
+
+constexpr double u = 0x1p-53;  // unit roundoff of binary64
+
+/// A map with a free start and goal (cells chosen uniformly, then freed: bounded by
+/// construction, no RC_PRE), and a corner policy.
+struct Scenario {
+  Grid g{1, 1};
+  Cell start;
+  Cell goal;
+  CornerPolicy policy = CornerPolicy::strict;
+};
+
+Scenario gen_scenario() {
+  Scenario sc;
+  sc.g = *testing::gen_grid(14, 14, 0.5);
+  const auto n = sc.g.cell_count();
+  sc.start = sc.g.cell(*rc::gen::inRange<std::int64_t>(0, n));
+  sc.goal = sc.g.cell(*rc::gen::inRange<std::int64_t>(0, n));
+  sc.g.set_blocked(sc.start, false);
+  sc.g.set_blocked(sc.goal, false);
+  sc.policy = *testing::gen_policy();
+  return sc;
+}
+
+/// The consistent heuristics of the table (search.admissible) under `p`.
+std::vector<Heuristic> consistent_heuristics(CornerPolicy p) {
+  std::vector<Heuristic> v;
+  for (const Heuristic h : {Heuristic::zero, Heuristic::manhattan, Heuristic::chebyshev,
+                            Heuristic::octile, Heuristic::euclidean})
+    if (heuristics::consistent(h, p)) v.push_back(h);
+  return v;
+}
+
+/// Cells reachable from `start` by allowed steps: a breadth-first flood fill written here from
+/// grid.corner-policy, independent of the search.
+std::vector<bool> flood_fill(const Grid& g, Cell start, CornerPolicy p) {
+  std::vector<bool> seen(static_cast<std::size_t>(g.cell_count()), false);
+  std::deque<Cell> queue{start};
+  seen[static_cast<std::size_t>(g.index(start))] = true;
+  while (!queue.empty()) {
+    const Cell c = queue.front();
+    queue.pop_front();
+    for (std::int64_t dy = -1; dy <= 1; ++dy) {
+      for (std::int64_t dx = -1; dx <= 1; ++dx) {
+        const Cell m{c.x + dx, c.y + dy};
+        if (!grid::step_allowed(g, c, m, p)) continue;
+        const auto i = static_cast<std::size_t>(g.index(m));
+        if (!seen[i]) {
+          seen[i] = true;
+          queue.push_back(m);
+        }
+      }
+    }
+  }
+  return seen;
+}
+
+/// Guarantee 2 of spec/search.md: two left-to-right sums of the same k step costs (in different
+/// orders) differ by at most 2 (k - 1) u L.
+bool same_cost_lengths(double a, double b, std::int64_t k) {
+  const double bound = 2.0 * static_cast<double>(std::max<std::int64_t>(k - 1, 0)) * u *
+                       std::max(a, b);
+  return std::fabs(a - b) <= bound;
+}
+
+/// Exact test of p <= q * sqrt(2) for integers p, q (no rounding anywhere).
+bool le_q_sqrt2(std::int64_t p, std::int64_t q) {
+  if (q >= 0) return p <= 0 || p * p <= 2 * q * q;
+  return p < 0 && p * p >= 2 * q * q;
+}
+
+}  // namespace
+
+TEST_CASE("prop_astar_length_equals_dijkstra", "[search][prop]") {
+  rc::prop("consistent heuristics: same found, same step counts, lengths within 2(k-1)uL", [] {
+    const Scenario sc = gen_scenario();
+    const auto d = search::dijkstra(sc.g, sc.start, sc.goal, sc.policy);
+    const auto ds = search::step_counts(d.path);
+    for (const Heuristic h : consistent_heuristics(sc.policy)) {
+      const auto a = search::astar(sc.g, sc.start, sc.goal, sc.policy, h);
+      RC_ASSERT(a.found == d.found);
+      RC_ASSERT(search::step_counts(a.path) == ds);
+      RC_ASSERT(same_cost_lengths(a.length, d.length, ds.orthogonal + ds.diagonal));
+    }
+  });
+}
+
+TEST_CASE("prop_paths_valid_under_policy", "[search][prop]") {
+  rc::prop("every found path passes metrics.valid-path; length == metrics.length bit for bit", [] {
+    const Scenario sc = gen_scenario();
+    const auto h = *rc::gen::element(Heuristic::zero, Heuristic::manhattan, Heuristic::chebyshev,
+                                     Heuristic::octile, Heuristic::euclidean);
+    const auto r = search::astar(sc.g, sc.start, sc.goal, sc.policy, h);
+    if (!r.found) {
+      RC_ASSERT(r.path.empty());
+      RC_ASSERT(r.length == 0.0);
+      return;
+    }
+    const auto check = metrics::validate_path(sc.g, r.path, sc.start, sc.goal, sc.policy);
+    RC_ASSERT(check.valid);
+    RC_ASSERT(r.length == metrics::path_length(r.path));
+  });
+}
+
+TEST_CASE("prop_astar_expands_no_more_than_dijkstra", "[search][prop]") {
+  rc::prop("consistent h with h >= 1 off the goal: expansions(A*) <= expansions(Dijkstra)", [] {
+    const Scenario sc = gen_scenario();
+    const auto d = search::dijkstra(sc.g, sc.start, sc.goal, sc.policy);
+    for (const Heuristic h : consistent_heuristics(sc.policy)) {
+      if (h == Heuristic::zero) continue;
+      const auto a = search::astar(sc.g, sc.start, sc.goal, sc.policy, h);
+      RC_ASSERT(a.expansions <= d.expansions);
+      if (!d.found) RC_ASSERT(a.expansions == d.expansions);  // both close the whole component
+    }
+  });
+}
+
+TEST_CASE("prop_found_agrees_with_flood_fill", "[search][prop]") {
+  rc::prop("found iff reachable; unreachable: empty path, expansions = component size", [] {
+    const Scenario sc = gen_scenario();
+    const auto seen = flood_fill(sc.g, sc.start, sc.policy);
+    const bool reachable = seen[static_cast<std::size_t>(sc.g.index(sc.goal))];
+    const auto component = std::count(seen.begin(), seen.end(), true);
+    RC_CLASSIFY(!reachable, "unreachable");
+    for (const Heuristic h : {Heuristic::zero, Heuristic::manhattan, Heuristic::chebyshev,
+                              Heuristic::octile, Heuristic::euclidean}) {
+      const auto r = search::astar(sc.g, sc.start, sc.goal, sc.policy, h);
+      RC_ASSERT(r.found == reachable);
+      RC_ASSERT(r.expansions <= component);
+      if (!reachable) {
+        RC_ASSERT(r.path.empty());
+        RC_ASSERT(r.length == 0.0);
+        RC_ASSERT(r.expansions == component);
+      }
+    }
+  });
+}
+
+TEST_CASE("prop_dijkstra_is_astar_with_zero_heuristic", "[search][prop]") {
+  rc::prop("dijkstra == astar(zero): same path, length bits, expansions", [] {
+    const Scenario sc = gen_scenario();
+    const auto d = search::dijkstra(sc.g, sc.start, sc.goal, sc.policy);
+    const auto z = search::astar(sc.g, sc.start, sc.goal, sc.policy, Heuristic::zero);
+    RC_ASSERT(d.found == z.found);
+    RC_ASSERT(d.path == z.path);
+    RC_ASSERT(d.length == z.length);
+    RC_ASSERT(d.expansions == z.expansions);
+  });
+}
+
+TEST_CASE("prop_manhattan_within_sqrt2_of_shortest", "[search][prop]") {
+  rc::prop("A*-manhattan under any policy: exact cost <= sqrt2 * shortest (guarantee 4)", [] {
+    const Scenario sc = gen_scenario();
+    const auto d = search::dijkstra(sc.g, sc.start, sc.goal, sc.policy);
+    const auto m = search::astar(sc.g, sc.start, sc.goal, sc.policy, Heuristic::manhattan);
+    RC_ASSERT(m.found == d.found);
+    if (!d.found) return;
+    const auto ms = search::step_counts(m.path);
+    const auto ds = search::step_counts(d.path);
+    // a + b sqrt2 <= sqrt2 (a' + b' sqrt2) = 2b' + a' sqrt2  <=>  a - 2b' <= (a' - b) sqrt2
+    RC_ASSERT(le_q_sqrt2(ms.orthogonal - 2 * ds.diagonal, ds.orthogonal - ms.diagonal));
+    // and never shorter than the shortest: a' + b' sqrt2 <= a + b sqrt2
+    RC_ASSERT(le_q_sqrt2(ds.orthogonal - ms.orthogonal, ms.diagonal - ds.diagonal));
+  });
+}
+
+TEST_CASE("prop_heuristic_lower_bound_and_consistency", "[search][prop]") {
+  rc::prop("admissible pairs: h(start) <= shortest; consistent pairs: h(n) <= c + h(n')", [] {
+    const Scenario sc = gen_scenario();
+    const auto d = search::dijkstra(sc.g, sc.start, sc.goal, sc.policy);
+    for (const Heuristic h : consistent_heuristics(sc.policy)) {
+      RC_ASSERT(heuristics::admissible(h, sc.policy));
+      const double hs = heuristics::evaluate(h, sc.start, sc.goal);
+      if (d.found) {
+        // Exact h <= exact d*; each double is within (k + 3) u of its exact value (d: k-term
+        // sum and the constant s; h: at most 3 roundings), so allow 2 (k + 3) u d.
+        const auto k = static_cast<double>(d.path.size());
+        RC_ASSERT(hs <= d.length + 2.0 * (k + 3.0) * u * d.length);
+      }
+      // Consistency along every allowed step out of the start (exact statement; the doubles
+      // may violate it by a few ulps, spec "Rounding").
+      if (sc.g.free(sc.start)) {
+        for (const auto& mv : grid::neighbours(sc.g, sc.start, sc.policy)) {
+          const double rhs = mv.cost + heuristics::evaluate(h, mv.to, sc.goal);
+          RC_ASSERT(hs <= rhs + 8.0 * u * rhs);
+        }
+      }
+    }
+  });
+}
+
+TEST_CASE("prop_heuristics_are_ordered", "[search][prop]") {
+  rc::prop("chebyshev <= euclidean <= octile <= manhattan (euclidean <= octile up to 4 ulps)", [] {
+    const Cell n{*rc::gen::inRange<std::int64_t>(-3000, 3000), *rc::gen::inRange<std::int64_t>(-3000, 3000)};
+    const Cell g{*rc::gen::inRange<std::int64_t>(-3000, 3000), *rc::gen::inRange<std::int64_t>(-3000, 3000)};
+    const double c = heuristics::chebyshev(n, g);
+    const double e = heuristics::euclidean(n, g);
+    const double o = heuristics::octile(n, g);
+    const double m = heuristics::manhattan(n, g);
+    RC_ASSERT(c <= e);  // sqrt is monotone and exact on perfect squares
+    RC_ASSERT(e <= o + 4.0 * u * o);  // equal in exact arithmetic when dx == dy, or one is 0
+    RC_ASSERT(o <= m);  // fl(s*m) <= 2m, and rounding is monotone
+    RC_ASSERT((c == 0.0) == (n == g));
+    RC_ASSERT(heuristics::octile(n, g) == heuristics::octile(g, n));
+  });
+}
+
+TEST_CASE("prop_order_is_a_strict_total_order", "[search][prop]") {
+  rc::prop("irreflexive, asymmetric, total on distinct indices, transitive", [] {
+    // Small value sets force ties on f and h.
+    const auto key = [] {
+      return search::OpenKey{*rc::gen::element(0.0, 1.0, std::numbers::sqrt2, 2.0),
+                             *rc::gen::element(0.0, 1.0, 2.0),
+                             *rc::gen::inRange<std::int64_t>(0, 4)};
+    };
+    const auto a = key();
+    const auto b = key();
+    const auto c = key();
+    RC_ASSERT(!search::precedes(a, a));
+    RC_ASSERT(!(search::precedes(a, b) && search::precedes(b, a)));
+    if (a.index != b.index) RC_ASSERT(search::precedes(a, b) || search::precedes(b, a));
+    if (search::precedes(a, b) && search::precedes(b, c)) RC_ASSERT(search::precedes(a, c));
+  });
+}
