@@ -289,28 +289,34 @@ void add_plan_commands(CLI::App& app, Action& run) {
   for (const auto& p : planners::planners()) algos += (algos.empty() ? "" : ", ") + p.name;
   auto* plan = app.add_subcommand(
       "plan", "Run one planner on one map; print the path, its metrics, the seed and every parameter");
-  auto* map_opt = plan->add_option("--map", o.map_file, "map file in pathref-grid 1 format (spec/formats.md)");
-  auto* builtin_opt = plan->add_option("--builtin", o.builtin, "built-in map name (see pathref maps)");
+  auto* map_opt = plan->add_option("--map", o.map_file, "map file in pathref-grid 1 format (spec/formats.md)")->type_name("FILE");
+  auto* builtin_opt = plan->add_option("--builtin", o.builtin, "built-in map name (see pathref maps)")->type_name("NAME");
   map_opt->excludes(builtin_opt);
   plan->add_option("--algo", o.algo, "planner: " + (algos.empty() ? std::string("(none registered)") : algos))
+      ->type_name("NAME")
       ->required();
-  plan->add_option("--start", o.start, "start cell X,Y (default: the map's start)");
-  plan->add_option("--goal", o.goal, "goal cell X,Y (default: the map's goal)");
-  plan->add_option("--seed", o.seed, "seed of the random stream (spec/rng.md)")->capture_default_str();
+  plan->add_option("--start", o.start, "start cell X,Y (default: the map's start)")->type_name("X,Y");
+  plan->add_option("--goal", o.goal, "goal cell X,Y (default: the map's goal)")->type_name("X,Y");
+  plan->add_option("--seed", o.seed, "seed of the random stream, 0 to 4294967295 (spec/rng.md)")
+      ->type_name("N")
+      ->capture_default_str();
   plan->add_option("--policy", o.policy, "corner policy for diagonal moves (spec/grid.md)")
+      ->type_name("POLICY")
       ->check(CLI::IsMember({"never", "strict", "one", "always"}))
       ->capture_default_str();
-  plan->add_option("--set", o.sets, "planner parameter key=value (repeatable; value JSON or plain string)");
+  plan->add_option("--set", o.sets, "planner parameter key=value (repeatable; value JSON or plain string)")
+      ->type_name("KEY=VALUE");
   plan->add_flag("--json", o.json, "print one JSON object (schema pathref-plan 1) instead of the report");
-  plan->add_option("--json-out", o.json_out, "also write the JSON object to FILE");
-  plan->add_option("--svg", o.svg, "write an SVG figure: map, obstacles, S, T, path, legend (+ convergence)");
+  plan->add_option("--json-out", o.json_out, "also write the JSON object to FILE")->type_name("FILE");
+  plan->add_option("--svg", o.svg, "write an SVG figure: map, obstacles, S, T, path, legend (+ convergence)")
+      ->type_name("FILE");
   plan->callback([&run] { run = [] { return run_plan(o); }; });
 
   auto* maps = app.add_subcommand("maps", "List the built-in maps, or print one as pathref-grid 1 text");
   static std::string show;
   static std::string show_svg;
   maps->add_option("name", show, "print this built-in map as pathref-grid 1 text");
-  maps->add_option("--svg", show_svg, "with NAME: also draw the map (S, T, obstacles) to FILE");
+  maps->add_option("--svg", show_svg, "with NAME: also draw the map (S, T, obstacles) to FILE")->type_name("FILE");
   maps->callback([&run] { run = [] { return run_maps(show, show_svg); }; });
 }
 
