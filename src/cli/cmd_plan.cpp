@@ -27,9 +27,9 @@ struct PlanOptions {
   std::string map_file;
   std::string builtin;
   std::string algo;
-  std::string start;
-  std::string goal;
-  std::uint32_t seed = 1;
+  std::optional<std::string> start;  ///< nullopt: not given (an empty --start "" is an error)
+  std::optional<std::string> goal;
+  std::string seed = "1";  ///< decimal text; parsed by parse_seed (CLI11 would read 010 as octal)
   std::string policy = "strict";
   std::vector<std::string> sets;
   bool json = false;
@@ -55,6 +55,19 @@ grid::Cell parse_cell_arg(const std::string& text, const char* option) {
     return v;
   };
   return grid::Cell{number(text.substr(0, comma)), number(text.substr(comma + 1))};
+}
+
+/// The --seed value: a decimal integer in [0, 2^32 - 1], digits only (no sign, no 0x, leading
+/// zeros are decimal). UsageError otherwise.
+std::uint32_t parse_seed(const std::string& text) {
+  const bool digits = !text.empty() && text.size() <= 10 &&
+                      text.find_first_not_of("0123456789") == std::string::npos;
+  std::uint64_t v = 0;
+  if (digits)
+    for (const char c : text) v = v * 10 + static_cast<std::uint64_t>(c - '0');
+  if (!digits || v > 0xFFFFFFFFu)
+    throw UsageError("--seed expects a decimal integer from 0 to 4294967295, got '" + text + "'");
+  return static_cast<std::uint32_t>(v);
 }
 
 /// --set key=value ...: the value is JSON when it parses as JSON, otherwise a plain string (the
@@ -134,9 +147,9 @@ LoadedMap load_map(const PlanOptions& o) {
 }
 
 /// The endpoint from the option if given, else the map's own; UsageError if neither.
-grid::Cell endpoint(const std::string& option_value, const std::optional<grid::Cell>& from_map,
-                    const char* option, const char* which) {
-  if (!option_value.empty()) return parse_cell_arg(option_value, option);
+grid::Cell endpoint(const std::optional<std::string>& option_value,
+                    const std::optional<grid::Cell>& from_map, const char* option, const char* which) {
+  if (option_value) return parse_cell_arg(*option_value, option);
   if (from_map) return *from_map;
   throw UsageError(fmt::format("the map defines no {0}: give {1} X,Y", which, option));
 }
@@ -216,6 +229,8 @@ int run_plan(const PlanOptions& o) {
     throw UsageError(fmt::format("unknown --algo '{}' (known: {})", o.algo,
                                  known.empty() ? "none registered" : known));
   }
+  const std::uint32_t seed = parse_seed(o.seed);
+  const grid::CornerPolicy policy = grid::parse_corner_policy(o.policy);
   const Json overrides = parse_sets(o.sets);
   // Validates every --set key and type before anything runs (UsageError names a bad key).
   const Json merged = planners::merge_params(planner->defaults, overrides);
@@ -230,10 +245,10 @@ int run_plan(const PlanOptions& o) {
   req.grid = &g;
   req.start = start;
   req.goal = goal;
-  req.policy = grid::parse_corner_policy(o.policy);
-  req.seed = o.seed;
+  req.policy = policy;
+  req.seed = seed;
   req.params = overrides;
-  io::PlanRecord rec{o.algo, o.seed, req.policy, lm.source, start, goal, merged, planner->run(req)};
+  io::PlanRecord rec{o.algo, req.seed, req.policy, lm.source, start, goal, merged, planner->run(req)};
   if (!rec.result.params_used.empty()) rec.params = rec.result.params_used;
 
   const Json j = io::plan_to_json(rec, g);
@@ -295,11 +310,15 @@ void add_plan_commands(CLI::App& app, Action& run) {
   plan->add_option("--algo", o.algo, "planner: " + (algos.empty() ? std::string("(none registered)") : algos))
       ->type_name("NAME")
       ->required();
-  plan->add_option("--start", o.start, "start cell X,Y (default: the map's start)")->type_name("X,Y");
-  plan->add_option("--goal", o.goal, "goal cell X,Y (default: the map's goal)")->type_name("X,Y");
+  static std::string start_text;
+  static std::string goal_text;
+  auto* start_opt =
+      plan->add_option("--start", start_text, "start cell X,Y (default: the map's start)")->type_name("X,Y");
+  auto* goal_opt =
+      plan->add_option("--goal", goal_text, "goal cell X,Y (default: the map's goal)")->type_name("X,Y");
   plan->add_option("--seed", o.seed, "seed of the random stream, 0 to 4294967295 (spec/rng.md)")
       ->type_name("N")
-      ->capture_default_str();
+      ->capture_default_str();  // a string, parsed by parse_seed
   plan->add_option("--policy", o.policy, "corner policy for diagonal moves (spec/grid.md)")
       ->type_name("POLICY")
       ->check(CLI::IsMember({"never", "strict", "one", "always"}))
@@ -310,7 +329,11 @@ void add_plan_commands(CLI::App& app, Action& run) {
   plan->add_option("--json-out", o.json_out, "also write the JSON object to FILE")->type_name("FILE");
   plan->add_option("--svg", o.svg, "write an SVG figure: map, obstacles, S, T, path, legend (+ convergence)")
       ->type_name("FILE");
-  plan->callback([&run] { run = [] { return run_plan(o); }; });
+  plan->callback([&run, start_opt, goal_opt] {
+    if (start_opt->count() > 0) o.start = start_text;
+    if (goal_opt->count() > 0) o.goal = goal_text;
+    run = [] { return run_plan(o); };
+  });
 
   auto* maps = app.add_subcommand("maps", "List the built-in maps, or print one as pathref-grid 1 text");
   static std::string show;

@@ -13,5 +13,6 @@ using Action = std::function<int()>;
 void add_eval_command(CLI::App& app, Action& run);
 void add_golden_command(CLI::App& app, Action& run);
 void add_plan_commands(CLI::App& app, Action& run);  // plan, maps
+void add_drive_command(CLI::App& app, Action& run);  // drive (spec/mecanum.md#cli)
 
 }  // namespace pathref::cli

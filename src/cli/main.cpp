@@ -16,6 +16,7 @@ int main(int argc, char** argv) {
   pathref::cli::add_plan_commands(app, run);
   pathref::cli::add_eval_command(app, run);
   pathref::cli::add_golden_command(app, run);
+  pathref::cli::add_drive_command(app, run);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

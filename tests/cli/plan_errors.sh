@@ -20,10 +20,12 @@ expect_exit() {
 g=(plan --builtin grid20)
 expect_exit 2 "unknown --algo 'nope' (known: " "${g[@]}" --algo nope
 expect_exit 2 "--algo is required" "${g[@]}"
-for bad in 1 1, ,1 a,b -1,0 1,2,3 "1, 2" 1.5,2; do
+for bad in "" 1 1, ,1 a,b -1,0 1,2,3 "1, 2" 1.5,2 " 1,2" 1234567890123456789,0; do
   expect_exit 2 "--start expects X,Y (two non-negative integers), got '$bad'" "${g[@]}" --algo astar --start "$bad"
 done
 expect_exit 2 "--goal expects X,Y" "${g[@]}" --algo astar --goal x
+expect_exit 2 "--start: At Most 1 required but received 2" "${g[@]}" --algo astar --start 0,0 --start 1,0
+expect_exit 2 "--algo: At Most 1 required but received 2" "${g[@]}" --algo astar --algo dijkstra
 expect_exit 2 "start (4, 0) is a blocked cell" "${g[@]}" --algo astar --start 4,0
 expect_exit 2 "goal (20, 19) is outside the 20x20 map" "${g[@]}" --algo astar --goal 20,19
 expect_exit 2 "unknown parameter 'foo' (known: heuristic)" "${g[@]}" --algo astar --set foo=1
@@ -32,8 +34,9 @@ expect_exit 2 "--set expects key=value, got 'heuristic'" "${g[@]}" --algo astar 
 expect_exit 2 "--set heuristic given more than once" "${g[@]}" --algo astar --set heuristic=octile --set heuristic=zero
 expect_exit 2 "unknown parameter 'heuristic' (known: none)" "${g[@]}" --algo dijkstra --set heuristic=octile
 expect_exit 2 "--policy: diag not in {never,strict,one,always}" "${g[@]}" --algo astar --policy diag
-expect_exit 2 "--seed" "${g[@]}" --algo astar --seed -1
-expect_exit 2 "--seed" "${g[@]}" --algo astar --seed 4294967296
+for bad in -1 4294967296 0x10 +5 1e3 "" " 7" 99999999999; do
+  expect_exit 2 "--seed expects a decimal integer from 0 to 4294967295, got '$bad'" "${g[@]}" --algo astar --seed "$bad"
+done
 expect_exit 2 "unknown built-in map 'nope' (known: grid20, shi6x6)" plan --builtin nope --algo astar
 expect_exit 2 "give exactly one of --map FILE or --builtin NAME" plan --algo astar
 expect_exit 2 "--map excludes --builtin" plan --builtin grid20 --map "$tmp/x" --algo astar

@@ -81,6 +81,12 @@ for (x, y), (px, py) in [(p[0], pts[0]), (p[-1], pts[-1])]:
     assert abs(px - (mx + (x + 0.5) * s)) < 0.01 and abs(py - (my + (19 - y + 0.5) * s)) < 0.01, (x, y, px, py)
 PY
 
+# Leading zeros are decimal (not octal); the extremes of the seed range are accepted.
+for s in 010:10 0:0 4294967295:4294967295; do
+  "$pathref" plan --builtin shi6x6 --algo astar --json --seed "${s%%:*}" >"$tmp/s.json"
+  python3 -c 'import json,sys; d=json.load(open(sys.argv[1])); assert d["seed"] == int(sys.argv[2]), d["seed"]' "$tmp/s.json" "${s##*:}"
+done
+
 # Options are reflected in the JSON: seed, policy, parameters, start and goal.
 "$pathref" plan --builtin shi6x6 --algo astar --json --seed 77 --policy one --set heuristic=chebyshev \
   --start 0,1 --goal 4,5 >"$tmp/b.json"

@@ -232,8 +232,12 @@ TEST_CASE("prop_straight_axis_path_costs_the_same_on_both_bases", "[drive][prop]
 
 TEST_CASE("prop_time_grows_with_length_for_fixed_turns", "[drive][prop]") {
   rc::prop("lengthening one run (same turns) increases the time on both bases", [] {
-    const DriveParams p = *gen_params();
+    DriveParams p = *gen_params();
     const bool axis = *rc::gen::arbitrary<bool>();
+    // Spec drive.path-time: with v_c > 0 and mixed axis/diagonal runs the Mecanum time is not
+    // monotone in a run's length (pinned by a unit test); the property holds for v_c = 0 or one
+    // direction factor for all runs (4-connected paths).
+    if (!axis) p.corner_speed = 0.0;
     auto runs = *gen_runs(axis);
     const double cell = *gen_real(0.125, 2.0);
     const auto path = path_from_runs(runs, axis);
@@ -251,16 +255,19 @@ TEST_CASE("prop_time_grows_with_length_for_fixed_turns", "[drive][prop]") {
 }
 
 TEST_CASE("prop_mecanum_never_slower_on_axis_paths", "[drive][prop]") {
-  rc::prop("4-connected paths: T_mecanum <= T_diff; a corner speed never slows the Mecanum base", [] {
+  rc::prop("4-connected paths: T_mecanum <= T_diff; a corner speed never slows the Mecanum base (any path)", [] {
     DriveParams p = *gen_params();
     const auto path = path_from_runs(*gen_runs(true), true);
     const double cell = *gen_real(0.125, 2.0);
     const PathTime m = path_time(path, cell, Base::mecanum, p);
     const PathTime d = path_time(path, cell, Base::diff, p);
     RC_ASSERT(m.time <= d.time * (1.0 + 1e-12));
+    // A corner speed never slows the Mecanum base, on any 8-neighbour path.
+    const auto any = path_from_runs(*gen_runs(false), false);
     DriveParams stop = p;
     stop.corner_speed = 0.0;
-    RC_ASSERT(m.time <= path_time(path, cell, Base::mecanum, stop).time * (1.0 + 1e-12));
+    RC_ASSERT(path_time(any, cell, Base::mecanum, p).time <=
+              path_time(any, cell, Base::mecanum, stop).time * (1.0 + 1e-12));
   });
 }
 

@@ -264,3 +264,26 @@ TEST_CASE("drive.path-time: schedule integrates to the distance and ends at the 
     }
   }
 }
+
+TEST_CASE("drive.path-time: with a corner speed a longer axis run can shorten a Mecanum path", "[drive]") {
+  // 39 diagonal steps then 1 (resp. 2) axis steps, cell 0.01 m, r w_max = 1 m/s, a = 1, v_c = 10.
+  // The joint speed is capped by braking on the last run, sqrt(2 * 1 * d2): 0.1414 resp. 0.2 m/s;
+  // the faster joint saves more on the long diagonal run than the extra 0.01 m costs. Documented in
+  // spec drive.path-time ("Consequences"); with v_c = 0 the time grows with every run's length.
+  DriveParams p;
+  p.wheel_speed_max = 20.0;
+  p.corner_speed = 10.0;
+  std::vector<grid::Cell> shorter{{0, 0}};
+  for (int i = 0; i < 39; ++i) shorter.push_back({shorter.back().x + 1, shorter.back().y + 1});
+  std::vector<grid::Cell> longer = shorter;
+  shorter.push_back({shorter.back().x + 1, shorter.back().y});
+  longer.push_back({longer.back().x + 1, longer.back().y});
+  longer.push_back({longer.back().x + 1, longer.back().y});
+  const double t_short = path_time(shorter, 0.01, Base::mecanum, p).time;
+  const double t_long = path_time(longer, 0.01, Base::mecanum, p).time;
+  CHECK_THAT(t_short, WithinRel(1.7302757382371412, 1e-12));
+  CHECK_THAT(t_long, WithinRel(1.728234315152864, 1e-12));
+  CHECK(t_long < t_short);
+  p.corner_speed = 0.0;
+  CHECK(path_time(longer, 0.01, Base::mecanum, p).time > path_time(shorter, 0.01, Base::mecanum, p).time);
+}

@@ -1,6 +1,7 @@
 #include "pathref/planners/search.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cstdlib>
 #include <limits>
 
@@ -8,33 +9,48 @@
 
 namespace pathref::search {
 
-bool precedes(const OpenKey& a, const OpenKey& b) noexcept {
-  if (a.f < b.f) return true;
-  if (b.f < a.f) return false;
-  if (a.h < b.h) return true;
-  if (b.h < a.h) return false;
-  return a.index < b.index;
-}
-
 namespace {
 
-/// One heap entry. An entry is current iff its g equals the cell's best g and the cell is not
-/// closed; older entries of the same cell (larger g) are skipped when they surface. This lazy
-/// deletion realises exactly the abstract OPEN set of spec/search.md: each open cell has one
-/// current entry, keyed by its current g.
+/// One heap entry: the key of a cell at the time it was put in OPEN. When a cell's g improves, a
+/// new entry is pushed and the old one stays (lazy deletion). An old entry has a larger g, hence
+/// a key that does not precede the new one (f = fl(g + h) is monotone in g; h and index are the
+/// same), so the first entry of a cell to surface carries the cell's current key (or an equal
+/// one): expanding the cell then with its current g is exactly the selection of spec/search.md,
+/// and every later entry of the cell finds it closed and is skipped (not an expansion).
 struct Entry {
   double f;
   double h;
-  double g;
   std::int64_t index;
 };
 
 /// std::push_heap/pop_heap build a max-heap; "a is later than b" puts the first key on top.
-bool later(const Entry& a, const Entry& b) noexcept {
-  return precedes(OpenKey{b.f, b.h, b.index}, OpenKey{a.f, a.h, a.index});
-}
+/// A function object (not a function pointer) so that the comparison is inlined.
+struct Later {
+  bool operator()(const Entry& a, const Entry& b) const noexcept {
+    return precedes(OpenKey{b.f, b.h, b.index}, OpenKey{a.f, a.h, a.index});
+  }
+};
 
-enum : std::uint8_t { unseen = 0, open = 1, closed = 2 };
+/// Per-cell state. `unknown` = not looked at yet; the grid is asked once whether the cell is
+/// free (Grid::free), and the answer is cached here together with the search state.
+enum : std::uint8_t { unknown = 0, blocked = 1, unseen = 2, open = 3, closed = 4 };
+
+struct Offset {
+  std::int64_t dx;
+  std::int64_t dy;
+  double cost;  // grid::step_cost
+};
+
+/// The 8 moves in grid.neighbour-order with their costs from grid::step_cost.
+std::array<Offset, 8> offsets() {
+  std::array<Offset, 8> o{};
+  std::size_t k = 0;
+  for (std::int64_t dy = -1; dy <= 1; ++dy)
+    for (std::int64_t dx = -1; dx <= 1; ++dx)
+      if (dx != 0 || dy != 0)
+        o[k++] = Offset{dx, dy, grid::step_cost(grid::Cell{0, 0}, grid::Cell{dx, dy})};
+  return o;
+}
 
 }  // namespace
 
@@ -45,11 +61,14 @@ Outcome astar(const grid::Grid& g, grid::Cell start, grid::Cell goal, grid::Corn
   require(g.free(start), "search: start cell is blocked");
   require(g.free(goal), "search: goal cell is blocked");
 
+  const std::int64_t width = g.width();
+  const std::int64_t height = g.height();
   const auto cells = static_cast<std::size_t>(g.cell_count());
   const std::int64_t goal_index = g.index(goal);
+  const std::array<Offset, 8> moves = offsets();
   std::vector<double> best_g(cells, std::numeric_limits<double>::infinity());
   std::vector<std::int64_t> parent(cells, -1);
-  std::vector<std::uint8_t> state(cells, unseen);
+  std::vector<std::uint8_t> state(cells, unknown);
   std::vector<Entry> heap;
 
   Outcome out;
@@ -57,20 +76,21 @@ Outcome astar(const grid::Grid& g, grid::Cell start, grid::Cell goal, grid::Corn
   const double h_start = heuristics::evaluate(h, start, goal);
   best_g[static_cast<std::size_t>(start_index)] = 0.0;
   state[static_cast<std::size_t>(start_index)] = open;
-  heap.push_back(Entry{0.0 + h_start, h_start, 0.0, start_index});
+  heap.push_back(Entry{0.0 + h_start, h_start, start_index});
 
   while (!heap.empty()) {
-    std::pop_heap(heap.begin(), heap.end(), later);
+    std::pop_heap(heap.begin(), heap.end(), Later{});
     const Entry e = heap.back();
     heap.pop_back();
     const auto ei = static_cast<std::size_t>(e.index);
-    if (state[ei] == closed || e.g != best_g[ei]) continue;  // stale entry: not an expansion
+    if (state[ei] == closed) continue;  // an older entry of a closed cell: not an expansion
     state[ei] = closed;
     ++out.expansions;
+    const double g_here = best_g[ei];
 
     if (e.index == goal_index) {
       out.found = true;
-      out.length = e.g;
+      out.length = g_here;
       for (std::int64_t i = e.index; i != -1; i = parent[static_cast<std::size_t>(i)])
         out.path.push_back(g.cell(i));
       std::reverse(out.path.begin(), out.path.end());
@@ -80,22 +100,24 @@ Outcome astar(const grid::Grid& g, grid::Cell start, grid::Cell goal, grid::Corn
     const grid::Cell c = g.cell(e.index);
     // Canonical neighbour order (grid.neighbour-order); the order cannot change the result
     // (spec/search.md: each neighbour is relaxed once per expansion, independently).
-    for (std::int64_t dy = -1; dy <= 1; ++dy) {
-      for (std::int64_t dx = -1; dx <= 1; ++dx) {
-        const grid::Cell m{c.x + dx, c.y + dy};
-        if (!grid::step_allowed(g, c, m, policy)) continue;
-        const std::int64_t mi = g.index(m);
-        const auto ui = static_cast<std::size_t>(mi);
-        if (state[ui] == closed) continue;  // no reopening
-        const double g_new = e.g + grid::step_cost(c, m);
-        if (state[ui] == unseen || g_new < best_g[ui]) {  // parent changes on strictly smaller g
-          best_g[ui] = g_new;
-          parent[ui] = e.index;
-          state[ui] = open;
-          const double h_m = heuristics::evaluate(h, m, goal);
-          heap.push_back(Entry{g_new + h_m, h_m, g_new, mi});
-          std::push_heap(heap.begin(), heap.end(), later);
-        }
+    for (const Offset& mv : moves) {
+      const grid::Cell m{c.x + mv.dx, c.y + mv.dy};
+      if (m.x < 0 || m.y < 0 || m.x >= width || m.y >= height) continue;
+      const std::int64_t mi = m.y * width + m.x;  // grid.index
+      const auto ui = static_cast<std::size_t>(mi);
+      if (state[ui] == unknown) state[ui] = g.free(m) ? unseen : blocked;
+      if (state[ui] == blocked || state[ui] == closed) continue;  // closed: no reopening
+      // c and m are free: an orthogonal step is allowed under every policy; a diagonal one
+      // depends on the policy and the two cells it passes between (grid.corner-policy).
+      if (mv.dx != 0 && mv.dy != 0 && !grid::step_allowed(g, c, m, policy)) continue;
+      const double g_new = g_here + mv.cost;
+      if (state[ui] == unseen || g_new < best_g[ui]) {  // parent changes on strictly smaller g
+        best_g[ui] = g_new;
+        parent[ui] = e.index;
+        state[ui] = open;
+        const double h_m = heuristics::evaluate(h, m, goal);
+        heap.push_back(Entry{g_new + h_m, h_m, mi});
+        std::push_heap(heap.begin(), heap.end(), Later{});
       }
     }
   }

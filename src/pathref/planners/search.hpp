@@ -30,7 +30,13 @@ struct OpenKey {
 /// Source: pathref. Spec: search.order
 /// Pre: f and h are not NaN (never violated by the search: g and h are finite).
 /// Golden: golden/search/search.order.json
-[[nodiscard]] bool precedes(const OpenKey& a, const OpenKey& b) noexcept;
+[[nodiscard]] constexpr bool precedes(const OpenKey& a, const OpenKey& b) noexcept {
+  if (a.f < b.f) return true;
+  if (b.f < a.f) return false;
+  if (a.h < b.h) return true;
+  if (b.h < a.h) return false;
+  return a.index < b.index;
+}
 
 /// What one search returns.
 struct Outcome {

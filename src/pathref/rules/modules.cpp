@@ -7,5 +7,6 @@ void register_all_modules(Registry& r) {
   register_metrics_rules(r);
   register_search_rules(r);
   register_mecanum_rules(r);
+  register_shi2022_rules(r);
 }
 }  // namespace pathref::rules

@@ -10,5 +10,6 @@ void register_grid_rules(Registry& r);
 void register_metrics_rules(Registry& r);
 void register_search_rules(Registry& r);
 void register_mecanum_rules(Registry& r);
+void register_shi2022_rules(Registry& r);
 void register_all_modules(Registry& r);
 }  // namespace pathref::rules

@@ -51,7 +51,8 @@ Profile trapezoid(double d, double v0, double v1, double v_max, double a) {
   p.t_dec = (p.v_peak - v1) / a;
   p.d_acc = (p.v_peak * p.v_peak - v0 * v0) / (2.0 * a);
   p.d_dec = (p.v_peak * p.v_peak - v1 * v1) / (2.0 * a);
-  p.d_cruise = std::max(0.0, (d - p.d_acc) - p.d_dec);
+  // A triangle has no cruise; (d - d_acc) - d_dec would only be a rounding residue there.
+  p.d_cruise = p.reaches_limit ? std::max(0.0, (d - p.d_acc) - p.d_dec) : 0.0;
   p.t_cruise = p.d_cruise > 0.0 ? p.d_cruise / p.v_peak : 0.0;
   p.time = (p.t_acc + p.t_cruise) + p.t_dec;
   require(std::isfinite(p.time), "run time overflows binary64");

@@ -43,7 +43,7 @@ struct Profile {
 
 /// Time to rotate on the spot by `angle` (radians, either sign) from rest to rest, yaw-rate limit
 /// omega_max (may be +inf), yaw acceleration limit alpha_max: trapezoid(|angle|, 0, 0, ...).
-/// Spec: drive.rotation. Pre: angle finite; omega_max > 0; alpha_max finite > 0 (DomainError).
+/// Source: pathref. Spec: drive.rotation. Pre: angle finite; omega_max > 0; alpha_max finite > 0 (DomainError).
 /// Golden: golden/mecanum/drive.rotation.json
 [[nodiscard]] Profile rotation_time(double angle, double omega_max, double alpha_max);
 
@@ -72,7 +72,7 @@ struct Runs {
 };
 
 /// Decomposes a path of 8-neighbour steps into maximal straight runs and the turns between them.
-/// Spec: drive.runs. Pre: path non-empty; every step an 8-neighbour step (no repeated cell, no
+/// Source: pathref. Spec: drive.runs. Pre: path non-empty; every step an 8-neighbour step (no repeated cell, no
 /// jump); |x|, |y| <= 2^25 (DomainError naming the step). Post: turns.size() ==
 /// max(0, runs.size() - 1) == metrics::turn_count(path) for such paths.
 /// Golden: golden/mecanum/drive.runs.json
@@ -85,7 +85,7 @@ inline constexpr std::int64_t max_abs_path_coordinate = std::int64_t{1} << 25;
 /// limits A_j and a target corner speed v_c: targets min(v_c, V_j, V_{j+1}), then a forward pass
 /// u_j = min(u_j, sqrt(u_{j-1}^2 + 2 A_j d_j)) and a backward pass
 /// u_j = min(u_j, sqrt(u_{j+1}^2 + 2 A_{j+1} d_{j+1})).
-/// Spec: drive.corner-speeds. Pre: m >= 1 equal-length lists; d_j finite > 0; V_j > 0;
+/// Source: pathref (forward-backward pass of speed planning). Spec: drive.corner-speeds. Pre: m >= 1 equal-length lists; d_j finite > 0; V_j > 0;
 /// A_j finite > 0; v_c finite >= 0 (DomainError). Golden: golden/mecanum/drive.corner-speeds.json
 [[nodiscard]] std::vector<double> corner_speeds(std::span<const double> lengths,
                                                 std::span<const double> v_max,
@@ -145,7 +145,7 @@ struct PathTime {
 /// Mecanum: V_j = min(v_cap, r w / g_j), A_j = a / g_j, joint speeds by corner_speeds with v_c.
 /// Diff: V_j = min(v_cap, r w), A_j = a, stops at every joint and rotates by the turning angle with
 /// Omega = min(Omega_cap, r w / b), A_psi = a / b; T = t_1 + rho_1 + t_2 + ... .
-/// Spec: drive.path-time. Pre: path as straight_runs; cell finite > 0; parameters as the spec's
+/// Source: pathref; vehicle of Shi et al. 2022 §5.3, Table 2. Spec: drive.path-time. Pre: path as straight_runs; cell finite > 0; parameters as the spec's
 /// Domain (DomainError). Golden: golden/mecanum/drive.path-time.json
 [[nodiscard]] PathTime path_time(std::span<const grid::Cell> path, double cell, Base base,
                                  const DriveParams& params);

@@ -40,8 +40,9 @@ using WheelSpeeds = Eigen::Vector4d;
 
 /// Inverse kinematics: w = J t / r, e.g. w_FL = (v_x - v_y - k omega) / r.
 /// Source: standard Mecanum kinematics (Lynch & Park, Modern Robotics, 2017, §13.2).
-/// Spec: mecanum.ik. Pre: geometry valid; twist finite (DomainError).
+/// Spec: mecanum.ik. Pre: geometry valid; twist finite; result finite (DomainError).
 /// Post: forward_kinematics(inverse_kinematics(t)) == t up to rounding.
+/// Interpretation: wheel order (pathref | ros2) is applied by to_wheel_order.
 /// Golden: golden/mecanum/mecanum.ik.json
 [[nodiscard]] WheelSpeeds inverse_kinematics(const Twist& t, const Geometry& g);
 
@@ -62,6 +63,7 @@ struct Residual {
 
 /// Splits w into its rigid-body part IK(FK(w)) and the residual w - IK(FK(w)), which is zero iff
 /// some twist produces w. Independent of the geometry (up to rounding).
+/// Source: pathref (orthogonal decomposition of R^4 by the columns of J).
 /// Spec: mecanum.residual. Pre: geometry valid; w finite (DomainError).
 /// Golden: golden/mecanum/mecanum.residual.json
 [[nodiscard]] Residual kinematic_residual(const WheelSpeeds& w, const Geometry& g);
@@ -81,8 +83,10 @@ inline constexpr double m2006_gear_ratio = 36.0;
 inline constexpr double shi2022_rated_rpm = 500.0;
 
 /// Wheel speed limit in rad/s at the wheel: ((rpm * 2 pi) / 60) / g, g = 1 (output) or
-/// gear_ratio (rotor). Source: Shi et al. 2022 Table 2; reading in spec/mecanum.md.
+/// gear_ratio (rotor). Source: Shi et al. 2022 Table 2 ("Maximum speed 500 rpm").
 /// Spec: mecanum.wheel-limit. Pre: rpm finite > 0; gear_ratio finite >= 1 (DomainError).
+/// Interpretation: limit_at = output (default; 500 rpm at the gearbox output = the wheel) |
+/// rotor (500 rpm at the motor rotor, wheel at rpm / 36); spec/mecanum.md#conventions.
 /// Golden: golden/mecanum/mecanum.wheel-limit.json
 [[nodiscard]] double wheel_speed_limit(double rpm, LimitAt at, double gear_ratio);
 
@@ -108,6 +112,7 @@ struct Saturated {
 };
 
 /// Scales t uniformly (keeping its direction) so that no wheel turns faster than w_max.
+/// Source: pathref (the usual desaturation of wheel commands, applied to the twist).
 /// Spec: mecanum.saturate. Pre: geometry valid; t finite; w_max finite > 0 (DomainError).
 /// Golden: golden/mecanum/mecanum.saturate.json
 [[nodiscard]] Saturated saturate(const Twist& t, const Geometry& g, double w_max);
@@ -119,7 +124,7 @@ struct Saturated {
 
 /// Top translation speed (omega = 0) along d under the wheel limit: r w_max / g(d).
 /// r w_max along a body axis, r w_max / sqrt 2 along a diagonal.
-/// Spec: mecanum.max-speed. Pre: d finite, not (0, 0); r, w_max finite > 0 (DomainError).
+/// Source: pathref, from mecanum.ik. Spec: mecanum.max-speed. Pre: d finite, not (0, 0); r, w_max finite > 0 (DomainError).
 /// Golden: golden/mecanum/mecanum.max-speed.json
 [[nodiscard]] double max_translation_speed(double dx, double dy, double r, double w_max);
 

@@ -4,9 +4,10 @@ from . import search
 from . import grid
 from . import metrics
 from . import mecanum
+from . import shi2022
 
 RULES = {}
-for _module in (rng, search, grid, metrics, mecanum):
+for _module in (rng, search, grid, metrics, mecanum, shi2022):
     for _id, _fn in _module.RULES.items():
         assert _id not in RULES, _id
         RULES[_id] = _fn
