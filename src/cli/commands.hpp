@@ -14,5 +14,6 @@ void add_eval_command(CLI::App& app, Action& run);
 void add_golden_command(CLI::App& app, Action& run);
 void add_plan_commands(CLI::App& app, Action& run);  // plan, maps
 void add_drive_command(CLI::App& app, Action& run);  // drive (spec/mecanum.md#cli)
+void add_inflate_command(CLI::App& app, Action& run);  // inflate (spec/inflation.md#cli)
 
 }  // namespace pathref::cli

@@ -6,8 +6,11 @@
 
 #include "commands.hpp"
 #include "pathref/core/error.hpp"
+#include "pathref/geometry/inflation.hpp"
 
 int main(int argc, char** argv) {
+  // inflation.* rules (pathref_geometry, CGAL) join the registry before its first use.
+  pathref::geometry::install_inflation_rules();
   CLI::App app{"pathref " PATHREF_VERSION
                " - formally specified reference implementation of grid path planners"};
   app.require_subcommand(1);
@@ -17,6 +20,7 @@ int main(int argc, char** argv) {
   pathref::cli::add_eval_command(app, run);
   pathref::cli::add_golden_command(app, run);
   pathref::cli::add_drive_command(app, run);
+  pathref::cli::add_inflate_command(app, run);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -228,8 +228,8 @@ TEST_CASE("prop_fit1_is_inverse_length", "[shi2022][prop]") {
 
 TEST_CASE("prop_fitness_factors_positive", "[shi2022][prop]") {
   rc::prop("default readings: fit_1, fit_2 (n >= 3), fit_3 (n >= 2) > 0; fit > 0", [] {
-    const grid::Grid g = *testing::gen_grid(10, 10, 0.5);
-    RC_PRE(g.cell_count() >= 2);
+    const grid::Grid g = testing::random_grid(*rc::gen::arbitrary<std::uint32_t>(),
+                                              *rc::gen::inRange(1, 11), *rc::gen::inRange(2, 11), 0.5);
     const auto path = *gen_nodes_in(g, 2, 12);
     const double f1 = ga::inverse_length(metrics::path_length(path));
     const double f2 = ga::smoothness_factor(path);
@@ -288,8 +288,8 @@ TEST_CASE("prop_smoothness_per_node_each_term_in_unit_interval", "[shi2022][prop
 
 TEST_CASE("prop_safety_never_increases_with_an_extra_obstacle", "[shi2022][prop]") {
   rc::prop("blocking one more cell off the path never raises fit_3 (defaults)", [] {
-    grid::Grid g = *testing::gen_grid(8, 8, 0.4);
-    RC_PRE(g.cell_count() >= 3);
+    grid::Grid g = testing::random_grid(*rc::gen::arbitrary<std::uint32_t>(), *rc::gen::inRange(2, 9),
+                                        *rc::gen::inRange(2, 9), 0.3);
     const auto path = *gen_nodes_in(g, 2, 8);
     const Cell extra{*rc::gen::inRange<std::int64_t>(0, g.width()),
                      *rc::gen::inRange<std::int64_t>(0, g.height())};

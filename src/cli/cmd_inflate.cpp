@@ -1,0 +1,59 @@
+// `pathref inflate SCENE.json [--out FILE] [--svg FILE]` (spec/inflation.md#cli): reads a polygon
+// scene, inflates its obstacles exactly (inflation.scene) and writes the grid map as
+// pathref-grid 1 text (stdout without --out), ready for `pathref plan --map FILE`.
+#include <fmt/core.h>
+
+#include <fstream>
+#include <string>
+
+#include "commands.hpp"
+#include "pathref/core/error.hpp"
+#include "pathref/geometry/inflation.hpp"
+#include "pathref/geometry/scene.hpp"
+#include "pathref/io/grid_text.hpp"
+#include "pathref/io/svg.hpp"
+
+namespace pathref::cli {
+
+namespace {
+void write_file(const std::string& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary);
+  out << text;
+  out.close();
+  if (!out) throw UsageError("cannot write '" + path + "'");
+}
+}  // namespace
+
+void add_inflate_command(CLI::App& app, Action& run) {
+  auto* cmd = app.add_subcommand(
+      "inflate",
+      "Inflate the polygons of a scene (pathref-scene 1 JSON) by radius + margin, exactly, into a "
+      "grid map (pathref-grid 1)");
+  static std::string scene_path, out_path, svg_path;
+  cmd->add_option("scene", scene_path, "scene file (JSON, spec/formats.md#polygon-scene-json)")->required();
+  cmd->add_option("--out", out_path, "write the grid map here instead of stdout");
+  cmd->add_option("--svg", svg_path, "also write an SVG figure of the inflated map");
+  cmd->callback([&run] {
+    run = [] {
+      const geometry::Scene scene = geometry::read_scene_file(scene_path);
+      const geometry::InflatedScene inf = geometry::inflate_scene(scene);
+      io::MapFile map{inf.grid, inf.start, inf.goal, scene.name};
+      const std::string text = io::to_grid_text(map);
+      if (out_path.empty()) {
+        fmt::print("{}", text);
+      } else {
+        write_file(out_path, text);
+      }
+      if (!svg_path.empty()) {
+        const std::string title = fmt::format(
+            "{} inflated by r = {} + {} ({} of {} cells blocked)",
+            scene.name.empty() ? std::string("scene") : scene.name, geometry::to_string(scene.radius),
+            geometry::to_string(scene.margin), inf.grid.blocked_count(), inf.grid.cell_count());
+        write_file(svg_path, io::svg_map(inf.grid, inf.start, inf.goal, {}, title));
+      }
+      return 0;
+    };
+  });
+}
+
+}  // namespace pathref::cli

@@ -1,0 +1,303 @@
+// Polygon scene reader/writer (spec/formats.md, "Polygon scene (JSON)").
+#include "pathref/geometry/scene.hpp"
+
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <set>
+#include <sstream>
+
+#include "pathref/core/error.hpp"
+
+namespace pathref::geometry {
+
+using Json = nlohmann::json;
+
+namespace {
+
+constexpr std::size_t max_depth = 64;
+constexpr const char* format_name = "pathref-scene 1";
+
+/// SAX handler building a DOM in which every non-integer number keeps its exact text as a
+/// binary value (JSON text never produces binary values, so the two cannot be confused).
+class ExactDom {
+ public:
+  explicit ExactDom(Json& root) : root_(root) {}
+  bool null() { return put(Json(nullptr)); }
+  bool boolean(bool v) { return put(Json(v)); }
+  bool number_integer(Json::number_integer_t v) { return put(Json(v)); }
+  bool number_unsigned(Json::number_unsigned_t v) { return put(Json(v)); }
+  bool number_float(Json::number_float_t, const Json::string_t& text) {
+    return put(Json::binary(Json::binary_t::container_type(text.begin(), text.end())));
+  }
+  bool string(Json::string_t& v) { return put(Json(v)); }
+  bool binary(Json::binary_t& v) { return put(Json::binary(v)); }
+  bool start_object(std::size_t) { return open(Json::object()); }
+  bool key(Json::string_t& k) {
+    Json& obj = *stack_.back();
+    if (obj.contains(k)) {
+      error_ = "duplicate key \"" + k + "\"";
+      return false;
+    }
+    key_ = k;
+    return true;
+  }
+  bool end_object() { stack_.pop_back(); return true; }
+  bool start_array(std::size_t) { return open(Json::array()); }
+  bool end_array() { stack_.pop_back(); return true; }
+  bool parse_error(std::size_t position, const std::string&, const nlohmann::detail::exception& e) {
+    position_ = position;
+    error_ = e.what();
+    return false;
+  }
+  [[nodiscard]] const std::string& error() const noexcept { return error_; }
+  [[nodiscard]] std::size_t position() const noexcept { return position_; }
+
+ private:
+  bool put(Json v) {
+    if (stack_.empty()) {
+      root_ = std::move(v);
+      return true;
+    }
+    Json& parent = *stack_.back();
+    if (parent.is_array()) {
+      parent.push_back(std::move(v));
+    } else {
+      parent[key_] = std::move(v);
+    }
+    return true;
+  }
+  bool open(Json v) {
+    if (stack_.size() >= max_depth) {
+      error_ = "nesting deeper than 64 levels";
+      return false;
+    }
+    Json* slot = nullptr;
+    if (stack_.empty()) {
+      root_ = std::move(v);
+      slot = &root_;
+    } else {
+      Json& parent = *stack_.back();
+      if (parent.is_array()) {
+        parent.push_back(std::move(v));
+        slot = &parent.back();
+      } else {
+        parent[key_] = std::move(v);
+        slot = &parent[key_];
+      }
+    }
+    stack_.push_back(slot);
+    return true;
+  }
+
+  Json& root_;
+  std::vector<Json*> stack_;
+  std::string key_;
+  std::string error_;
+  std::size_t position_ = 0;
+};
+
+/// Reads values with JSON-pointer error messages.
+class Reader {
+ public:
+  explicit Reader(std::string_view file) : file_(file) {}
+
+  [[noreturn]] void fail(const std::string& ptr, const std::string& what) const {
+    throw ParseError(file_, 0, 0, (ptr.empty() ? std::string("/") : ptr) + ": " + what);
+  }
+
+  static std::string kind(const Json& v) {
+    if (v.is_binary() || v.is_number_float()) return "a non-integer number";
+    if (v.is_number()) return "an integer";
+    return std::string(v.type_name() == std::string("object") ? "an " : "a ") + v.type_name();
+  }
+
+  std::int64_t integer(const Json& v, const std::string& ptr, std::int64_t lo, std::int64_t hi) const {
+    const std::string want = "expected an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
+    if (v.is_number_unsigned()) {
+      const auto u = v.get<std::uint64_t>();
+      if (u > static_cast<std::uint64_t>(hi)) fail(ptr, want + ", got " + std::to_string(u));
+      return static_cast<std::int64_t>(u);
+    }
+    if (v.is_number_integer()) {
+      const auto i = v.get<std::int64_t>();
+      if (i < lo || i > hi) fail(ptr, want + ", got " + std::to_string(i));
+      return i;
+    }
+    fail(ptr, want + ", got " + kind(v));
+  }
+
+  Decimal decimal(const Json& v, const std::string& ptr) const {
+    const std::string want = "expected a number (at most 30 significant digits, |exponent| <= 30)";
+    std::optional<Decimal> d;
+    if (v.is_number_unsigned()) {
+      d = parse_decimal(std::to_string(v.get<std::uint64_t>()));
+    } else if (v.is_number_integer()) {
+      d = decimal_from_integer(v.get<std::int64_t>());
+    } else if (v.is_binary()) {
+      const auto& b = v.get_binary();
+      d = parse_decimal(std::string(b.begin(), b.end()));
+      if (!d) fail(ptr, want + ", got " + std::string(b.begin(), b.end()));
+    } else if (v.is_number_float()) {
+      d = decimal_from_double_shortest(v.get<double>());
+    } else {
+      fail(ptr, want + ", got " + kind(v));
+    }
+    if (!d) fail(ptr, want);
+    return *d;
+  }
+
+  Decimal decimal_at_least(const Json& v, const std::string& ptr, bool strictly_positive) const {
+    Decimal d = decimal(v, ptr);
+    if (d.negative || (strictly_positive && d.is_zero()))
+      fail(ptr, strictly_positive ? "expected a number > 0, got " + to_string(d)
+                                  : "expected a number >= 0, got " + to_string(d));
+    return d;
+  }
+
+  Point point(const Json& v, const std::string& ptr) const {
+    if (!v.is_array() || v.size() != 2) fail(ptr, "expected [x, y] (an array of two numbers), got " + kind(v) + (v.is_array() ? " of " + std::to_string(v.size()) + " elements" : ""));
+    return Point{decimal(v[0], ptr + "/0"), decimal(v[1], ptr + "/1")};
+  }
+
+  grid::Cell cell(const Json& v, const std::string& ptr) const {
+    if (!v.is_array() || v.size() != 2) fail(ptr, "expected a cell [x, y] (two integers), got " + kind(v));
+    constexpr std::int64_t big = std::int64_t{1} << 40;
+    return grid::Cell{integer(v[0], ptr + "/0", -big, big), integer(v[1], ptr + "/1", -big, big)};
+  }
+
+ private:
+  std::string file_;
+};
+
+std::pair<std::size_t, std::size_t> line_column(std::string_view text, std::size_t byte) {
+  std::size_t line = 1, col = 1;
+  for (std::size_t i = 0; i < byte && i < text.size(); ++i) {
+    if (text[i] == '\n') {
+      ++line;
+      col = 1;
+    } else {
+      ++col;
+    }
+  }
+  return {line, col};
+}
+
+}  // namespace
+
+Scene scene_from_json(const Json& obj, std::string_view filename, SceneKeys keys) {
+  const Reader rd(filename);
+  if (!obj.is_object()) rd.fail("", "expected a JSON object (a pathref-scene 1), got " + Reader::kind(obj));
+  static const std::set<std::string> known = {"format", "name", "origin", "width", "height", "cell_size",
+                                              "radius", "margin", "polygons", "start", "goal"};
+  for (const auto& [k, v] : obj.items()) {
+    (void)v;
+    if (known.count(k) == 0) rd.fail("/" + k, "unknown key (expected one of format, name, origin, width, height, cell_size, radius, margin, polygons, start, goal)");
+  }
+  auto need = [&](const char* k) -> const Json& {
+    if (!obj.contains(k)) rd.fail("", std::string("missing key \"") + k + "\"");
+    return obj.at(k);
+  };
+  Scene s;
+  if (keys == SceneKeys::file || obj.contains("format")) {
+    const Json& f = need("format");
+    if (!f.is_string() || f.get<std::string>() != format_name)
+      rd.fail("/format", std::string("expected \"") + format_name + "\"");
+  }
+  if (obj.contains("name")) {
+    if (!obj.at("name").is_string()) rd.fail("/name", "expected a string, got " + Reader::kind(obj.at("name")));
+    s.name = obj.at("name").get<std::string>();
+  }
+  s.origin = rd.point(need("origin"), "/origin");
+  s.width = rd.integer(need("width"), "/width", 1, grid::Grid::max_cells);
+  s.height = rd.integer(need("height"), "/height", 1, grid::Grid::max_cells);
+  if (s.width * s.height > grid::Grid::max_cells)
+    rd.fail("/height", "expected width * height <= 2^28 cells, got " + std::to_string(s.width) + " * " + std::to_string(s.height));
+  s.cell_size = rd.decimal_at_least(need("cell_size"), "/cell_size", true);
+  s.radius = rd.decimal_at_least(need("radius"), "/radius", false);
+  s.margin = rd.decimal_at_least(need("margin"), "/margin", false);
+  const Json& polys = need("polygons");
+  if (!polys.is_array()) rd.fail("/polygons", "expected an array of polygons, got " + Reader::kind(polys));
+  if (polys.size() > max_scene_polygons)
+    rd.fail("/polygons", "expected at most 100000 polygons, got " + std::to_string(polys.size()));
+  std::size_t total = 0;
+  for (std::size_t i = 0; i < polys.size(); ++i) {
+    const std::string p = "/polygons/" + std::to_string(i);
+    const Json& po = polys[i];
+    if (!po.is_object()) rd.fail(p, "expected a polygon object {\"vertices\": [[x, y], ...]}, got " + Reader::kind(po));
+    for (const auto& [k, v] : po.items()) {
+      (void)v;
+      if (k != "vertices") rd.fail(p + "/" + k, "unknown key (expected \"vertices\")");
+    }
+    if (!po.contains("vertices")) rd.fail(p, "missing key \"vertices\"");
+    const Json& vs = po.at("vertices");
+    if (!vs.is_array()) rd.fail(p + "/vertices", "expected an array of [x, y] points, got " + Reader::kind(vs));
+    if (vs.size() > max_polygon_vertices)
+      rd.fail(p + "/vertices", "expected at most 100000 vertices, got " + std::to_string(vs.size()));
+    total += vs.size();
+    if (total > max_scene_vertices)
+      rd.fail(p + "/vertices", "expected at most 1000000 vertices in all polygons together");
+  }
+  s.polygons.reserve(polys.size());
+  for (std::size_t i = 0; i < polys.size(); ++i) {
+    const std::string p = "/polygons/" + std::to_string(i) + "/vertices";
+    const Json& vs = polys[i].at("vertices");
+    Polygon poly;
+    poly.vertices.reserve(vs.size());
+    for (std::size_t j = 0; j < vs.size(); ++j) poly.vertices.push_back(rd.point(vs[j], p + "/" + std::to_string(j)));
+    s.polygons.push_back(std::move(poly));
+  }
+  if (keys == SceneKeys::file || obj.contains("start")) s.start = rd.cell(need("start"), "/start");
+  if (keys == SceneKeys::file || obj.contains("goal")) s.goal = rd.cell(need("goal"), "/goal");
+  return s;
+}
+
+Scene parse_scene_json(std::string_view text, std::string_view filename) {
+  Json root;
+  ExactDom dom(root);
+  const bool ok = Json::sax_parse(text.begin(), text.end(), &dom, Json::input_format_t::json, true);
+  if (!ok) {
+    const auto [line, col] = line_column(text, dom.position() > 0 ? dom.position() - 1 : 0);
+    throw ParseError(std::string(filename), line, col,
+                     "expected valid JSON (" + (dom.error().empty() ? std::string("syntax error") : dom.error()) + ")");
+  }
+  return scene_from_json(root, filename, SceneKeys::file);
+}
+
+std::string to_scene_json(const Scene& s) {
+  std::ostringstream o;
+  auto pt = [](const Point& p) { return "[" + to_string(p.x) + ", " + to_string(p.y) + "]"; };
+  o << "{\n  \"format\": \"" << format_name << "\",\n";
+  if (!s.name.empty()) o << "  \"name\": " << Json(s.name).dump() << ",\n";
+  o << "  \"origin\": " << pt(s.origin) << ",\n  \"width\": " << s.width << ",\n  \"height\": " << s.height
+    << ",\n  \"cell_size\": " << to_string(s.cell_size) << ",\n  \"radius\": " << to_string(s.radius)
+    << ",\n  \"margin\": " << to_string(s.margin) << ",\n  \"polygons\": [";
+  for (std::size_t i = 0; i < s.polygons.size(); ++i) {
+    o << (i ? ",\n    " : "\n    ") << "{\"vertices\": [";
+    const auto& vs = s.polygons[i].vertices;
+    for (std::size_t j = 0; j < vs.size(); ++j) o << (j ? ", " : "") << pt(vs[j]);
+    o << "]}";
+  }
+  o << (s.polygons.empty() ? "]" : "\n  ]");
+  if (s.start) o << ",\n  \"start\": [" << s.start->x << ", " << s.start->y << "]";
+  if (s.goal) o << ",\n  \"goal\": [" << s.goal->x << ", " << s.goal->y << "]";
+  o << "\n}\n";
+  return o.str();
+}
+
+Scene read_scene_file(const std::string& path) {
+  std::error_code ec;
+  const auto st = std::filesystem::status(path, ec);
+  if (ec || !std::filesystem::exists(st)) throw UsageError("cannot open scene file: " + path);
+  if (!std::filesystem::is_regular_file(st)) throw UsageError("not a regular file: " + path);
+  const auto size = std::filesystem::file_size(path, ec);
+  if (ec) throw UsageError("cannot read scene file: " + path);
+  if (size > max_scene_file_bytes)
+    throw UsageError("scene file larger than 64 MiB: " + path);
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw UsageError("cannot open scene file: " + path);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  return parse_scene_json(text, path);
+}
+
+}  // namespace pathref::geometry
