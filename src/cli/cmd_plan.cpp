@@ -12,6 +12,7 @@
 #include "pathref/core/error.hpp"
 #include "pathref/io/builtin_maps.hpp"
 #include "pathref/io/grid_text.hpp"
+#include "pathref/io/map_file.hpp"
 #include "pathref/io/plan_json.hpp"
 #include "pathref/io/svg.hpp"
 #include "pathref/planners/planner.hpp"
@@ -35,6 +36,7 @@ struct PlanOptions {
   bool json = false;
   std::string json_out;
   std::string svg;
+  MapReadArgs read;  ///< --format, --swamp, --water, --max-side, --max-cells (spec/formats.md#cli-map-options)
 };
 
 /// "X,Y" with X and Y non-negative decimal integers (at most 18 digits) -> Cell; UsageError
@@ -141,7 +143,7 @@ LoadedMap load_map(const PlanOptions& o) {
                                    io::builtin_map_names()));
     return {io::load_builtin_map(*b), io::MapSource{"builtin", std::string(b->name), std::nullopt}};
   }
-  io::MapFile m = io::read_grid_file(o.map_file);
+  io::MapFile m = io::load_map_file(o.map_file, map_read_options(o.read)).map;
   const std::string name = m.name.empty() ? o.map_file : m.name;
   return {std::move(m), io::MapSource{"file", name, o.map_file}};
 }
@@ -304,7 +306,7 @@ void add_plan_commands(CLI::App& app, Action& run) {
   for (const auto& p : planners::planners()) algos += (algos.empty() ? "" : ", ") + p.name;
   auto* plan = app.add_subcommand(
       "plan", "Run one planner on one map; print the path, its metrics, the seed and every parameter");
-  auto* map_opt = plan->add_option("--map", o.map_file, "map file in pathref-grid 1 format (spec/formats.md)")->type_name("FILE");
+  auto* map_opt = plan->add_option("--map", o.map_file, "map file: pathref-grid, MovingAI .map or 0/1 matrix (spec/formats.md)")->type_name("FILE");
   auto* builtin_opt = plan->add_option("--builtin", o.builtin, "built-in map name (see pathref maps)")->type_name("NAME");
   map_opt->excludes(builtin_opt);
   plan->add_option("--algo", o.algo, "planner: " + (algos.empty() ? std::string("(none registered)") : algos))
@@ -325,6 +327,7 @@ void add_plan_commands(CLI::App& app, Action& run) {
       ->capture_default_str();
   plan->add_option("--set", o.sets, "planner parameter key=value (repeatable; value JSON or plain string)")
       ->type_name("KEY=VALUE");
+  add_map_read_options(plan, o.read);
   plan->add_flag("--json", o.json, "print one JSON object (schema pathref-plan 1) instead of the report");
   plan->add_option("--json-out", o.json_out, "also write the JSON object to FILE")->type_name("FILE");
   plan->add_option("--svg", o.svg, "write an SVG figure: map, obstacles, S, T, path, legend (+ convergence)")

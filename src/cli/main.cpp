@@ -20,6 +20,8 @@ int main(int argc, char** argv) {
   pathref::cli::add_eval_command(app, run);
   pathref::cli::add_golden_command(app, run);
   pathref::cli::add_drive_command(app, run);
+  pathref::cli::add_scen_command(app, run);
+  pathref::cli::add_convert_command(app, run);
   pathref::cli::add_inflate_command(app, run);
   try {
     app.parse(argc, argv);

@@ -146,4 +146,20 @@ double adaptive_rho(double rho, std::int64_t t, std::int64_t T, double rho_min,
   throw UsageError("unknown Eq. 13 reading");
 }
 
+double elite_bonus(double h, double L_a, double L_n) {
+  require(std::isfinite(h) && h >= 0.0, "h must be finite and >= 0");
+  require(std::isfinite(L_a) && L_a > 0.0, "L_a must be finite and > 0");
+  require(std::isfinite(L_n) && L_n > 0.0, "L_n must be finite and > 0");
+  return (h * (L_a - L_n)) / L_n;
+}
+
+double pheromone_update_elite(double tau, double rho, double delta, double bonus,
+                              double tau_min) {
+  require(std::isfinite(bonus), "the elite bonus must be finite");
+  require(std::isfinite(tau_min) && tau_min > 0.0, "tau_min must be finite and > 0");
+  const double v = pheromone_update(tau, rho, delta) + bonus;
+  require(std::isfinite(v), "the updated pheromone overflows");
+  return v > tau_min ? v : tau_min;
+}
+
 }  // namespace pathref::aco

@@ -141,4 +141,29 @@ enum class RhoReading {
 [[nodiscard]] double adaptive_rho(double rho, std::int64_t t, std::int64_t T, double rho_min,
                                   RhoReading reading = RhoReading::factor);
 
+/// Elite term of Han (IJACSA) Eq. (6), h (L_a - L_n) / L_n, evaluated (h * (L_a - L_n)) / L_n:
+/// positive when this iteration's best L_n beat the best before it L_a, negative when it did not.
+/// Source: Han (IJACSA), Eq. (6), Sec. III.A ("L_a and L_n are the optimal values in the
+/// iteration history and the optimal values in this iteration"; the second "L_n", "the adjustable
+/// coefficient", is h).
+/// Spec: han.eq6
+/// Pre: h finite >= 0; L_a, L_n finite > 0 (DomainError). In the first iteration there is no
+/// history: the planner passes L_a = L_n (bonus 0).
+/// Post: sign(L_a - L_n) (or 0 when h == 0); exactly 0 when L_a == L_n.
+/// Golden: golden/han/han.eq6.json
+[[nodiscard]] double elite_bonus(double h, double L_a, double L_n);
+
+/// Han (IJACSA) Eq. (6) on one edge: tau(t+n) = max(((1 - rho) tau + delta) + bonus, tau_min),
+/// where ((1 - rho) tau + delta) is pheromone_update (Shi Eq. 5) and bonus is elite_bonus on the
+/// edges of this iteration's best path and 0 elsewhere (the planner's choice of edges; spec
+/// han.eq6). The floor tau_min keeps tau positive when the bonus is negative.
+/// Source: Han (IJACSA), Eq. (6), Sec. III.A.
+/// Spec: han.eq6
+/// Pre: as pheromone_update; bonus finite; tau_min finite > 0 (DomainError).
+/// Post: result >= tau_min > 0; equals max(pheromone_update(tau, rho, delta), tau_min) when
+/// bonus == 0.
+/// Golden: golden/han/han.eq6.json
+[[nodiscard]] double pheromone_update_elite(double tau, double rho, double delta, double bonus,
+                                            double tau_min);
+
 }  // namespace pathref::aco

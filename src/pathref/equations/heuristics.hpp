@@ -59,17 +59,19 @@ enum class Heuristic { zero, manhattan, chebyshev, octile, euclidean };
 [[nodiscard]] std::string_view to_string(Heuristic h) noexcept;
 
 /// h(n) for goal g: dispatches to the functions above (0 for zero).
-/// Spec: search.astar (the heuristic parameter). Pre: as the functions above (DomainError).
+/// Source: pathref. Spec: search.astar (the heuristic parameter).
+/// Pre: as the functions above (DomainError).
 [[nodiscard]] double evaluate(Heuristic h, grid::Cell n, grid::Cell g);
 
 /// Whether h never exceeds the exact shortest-path cost to the goal on every map under `policy`.
 /// false only for manhattan under strict, one and always (a single free diagonal step costs
-/// sqrt2 < 2). Spec: search.admissible. Golden: golden/search/search.admissible.json
+/// sqrt2 < 2). Source: definition of Hart, Nilsson & Raphael (1968); table: pathref.
+/// Spec: search.admissible. Golden: golden/search/search.admissible.json
 [[nodiscard]] bool admissible(Heuristic h, grid::CornerPolicy policy) noexcept;
 
 /// Whether h(n) <= c(n, n') + h(n') for every allowed step n -> n' under `policy` (in exact
 /// arithmetic; spec/search.md explains the rounding). Same table as admissible() here.
-/// Spec: search.admissible. Golden: golden/search/search.admissible.json
+/// Source: definition of Hart, Nilsson & Raphael (1968); table: pathref. Spec: search.admissible. Golden: golden/search/search.admissible.json
 [[nodiscard]] bool consistent(Heuristic h, grid::CornerPolicy policy) noexcept;
 
 }  // namespace pathref::heuristics

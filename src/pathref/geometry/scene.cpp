@@ -109,7 +109,8 @@ class Reader {
   static std::string kind(const Json& v) {
     if (v.is_binary() || v.is_number_float()) return "a non-integer number";
     if (v.is_number()) return "an integer";
-    return std::string(v.type_name() == std::string("object") ? "an " : "a ") + v.type_name();
+    const std::string t = v.type_name();
+    return (t == "object" || t == "array" ? "an " : "a ") + t;
   }
 
   std::int64_t integer(const Json& v, const std::string& ptr, std::int64_t lo, std::int64_t hi) const {
@@ -266,7 +267,14 @@ Scene parse_scene_json(std::string_view text, std::string_view filename) {
 
 std::string to_scene_json(const Scene& s) {
   std::ostringstream o;
-  auto pt = [](const Point& p) { return "[" + to_string(p.x) + ", " + to_string(p.y) + "]"; };
+  auto pt = [](const Point& p) {
+    std::string t = "[";  // appended piecewise: g++ 12 -O3 reports a false -Wrestrict for "[" + s
+    t += to_string(p.x);
+    t += ", ";
+    t += to_string(p.y);
+    t += ']';
+    return t;
+  };
   o << "{\n  \"format\": \"" << format_name << "\",\n";
   if (!s.name.empty()) o << "  \"name\": " << Json(s.name).dump() << ",\n";
   o << "  \"origin\": " << pt(s.origin) << ",\n  \"width\": " << s.width << ",\n  \"height\": " << s.height

@@ -79,7 +79,7 @@ struct LoadedMapFile {
 /// is refused with a UsageError pointing to `pathref scen`.
 [[nodiscard]] LoadedMapFile load_map_file(const std::string& path, const MapReadOptions& options);
 
-/// The output formats of `pathref convert` (spec/cli.md#convert).
+/// The output formats of `pathref convert` (spec/formats.md#cli-convert).
 enum class OutputFormat { pathref_grid, movingai, matrix, matlab };
 /// "pathref-grid" | "movingai" | "matrix" | "matlab" -> format; UsageError otherwise.
 [[nodiscard]] OutputFormat parse_output_format(std::string_view name);

@@ -413,7 +413,8 @@ double agreement_tolerance(const PrintedLength& length, int writer_digits) {
   // The double nearest 10^k, read from its decimal text (correctly rounded, unlike pow).
   const std::string s = fmt::format("1e{}", k);
   double u = 0.0;
-  std::from_chars(s.data(), s.data() + s.size(), u);
+  const auto result = std::from_chars(s.data(), s.data() + s.size(), u);
+  if (result.ec == std::errc::result_out_of_range) u = k < 0 ? 0.0 : HUGE_VAL;  // under/overflow
   return u;
 }
 

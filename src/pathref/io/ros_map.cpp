@@ -693,21 +693,23 @@ RosMap ros_map_from_image(const PgmImage& image, const RosMapMeta& meta, const R
                      fmt::format("mode raw needs an 8-bit image with maxval 255, got maxval {}", image.maxval));
   RosMap out{MapFile{grid::Grid(image.width, image.height), std::nullopt, std::nullopt, ""}, meta,
              std::string(image_name), 0};
-  // Occupancy depends only on the sample value: classify each distinct value once.
-  std::vector<std::uint8_t> blocked_by_value(static_cast<std::size_t>(image.maxval) + 1);
-  std::vector<std::uint8_t> unknown_by_value(blocked_by_value.size());
-  for (std::uint32_t v = 0; v <= image.maxval; ++v) {
-    const Occupancy o = classify_pixel(v, image.maxval, meta);
-    unknown_by_value[v] = o == Occupancy::unknown ? 1 : 0;
-    blocked_by_value[v] = (o == Occupancy::occupied || (o == Occupancy::unknown && options.unknown == UnknownAs::blocked)) ? 1 : 0;
+  // Occupancy depends only on the sample value: for images with more pixels than possible
+  // values, classify each value once (a table of maxval + 1 entries); else classify each pixel.
+  const bool use_table = image.pixels.size() > static_cast<std::size_t>(image.maxval);
+  std::vector<Occupancy> table;
+  if (use_table) {
+    table.resize(static_cast<std::size_t>(image.maxval) + 1);
+    for (std::uint32_t v = 0; v <= image.maxval; ++v) table[v] = classify_pixel(v, image.maxval, meta);
   }
   const std::int64_t w = image.width;
   const std::int64_t h = image.height;
   for (std::int64_t row = 0; row < h; ++row)
     for (std::int64_t x = 0; x < w; ++x) {
       const std::uint16_t v = image.pixels[static_cast<std::size_t>(row * w + x)];
-      out.unknown_cells += unknown_by_value[v];
-      if (blocked_by_value[v] != 0) out.map.grid.set_blocked(grid::Cell{x, h - 1 - row}, true);
+      const Occupancy o = use_table ? table[v] : classify_pixel(v, image.maxval, meta);
+      if (o == Occupancy::unknown) ++out.unknown_cells;
+      if (o == Occupancy::occupied || (o == Occupancy::unknown && options.unknown == UnknownAs::blocked))
+        out.map.grid.set_blocked(grid::Cell{x, h - 1 - row}, true);
     }
   return out;
 }

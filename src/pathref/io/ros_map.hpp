@@ -55,11 +55,11 @@ struct PgmImage {
 
 // ---- map_server YAML ------------------------------------------------------------------------
 
-/// map_server's `mode` key. Spec: ros.occupancy.
+/// map_server's `mode` key. Spec: spec/formats.md#ros-occupancy.
 enum class RosMapMode { trinary, scale, raw };
 
 /// What a cell that is neither free nor occupied becomes in pathref's binary grid.
-/// Spec: ros.occupancy (default: blocked, the conservative choice).
+/// Spec: spec/formats.md#ros-occupancy (default: blocked, the conservative choice).
 enum class UnknownAs { blocked, free };
 
 /// "trinary" | "scale" | "raw"; "blocked" | "free" (UsageError on anything else).
@@ -89,7 +89,7 @@ struct RosMapMeta {
   }
 };
 
-/// Reader options. Spec: ros.occupancy, spec/formats.md#ros-map-yaml.
+/// Reader options. Spec: spec/formats.md#ros-occupancy, spec/formats.md#ros-map-yaml.
 struct RosMapOptions {
   UnknownAs unknown = UnknownAs::blocked;  ///< what unknown (and scale's in-between) cells become
   bool allow_unknown_keys = false;         ///< ignore keys map_server does not read (else an error)
@@ -118,7 +118,7 @@ enum class Occupancy { free, occupied, unknown };
 /// occupied if p > occupied_thresh, else free if p < free_thresh, else unknown. raw (maxval 255,
 /// no negate): v > 100 is unknown, otherwise p = v / 100 with the same thresholds.
 /// Source: ROS map_server (wiki.ros.org/map_server, "Value Interpretation"); Nav2 map_io.
-/// Spec: ros.occupancy. Pre: 1 <= maxval <= 65535, v <= maxval; for raw maxval == 255 and
+/// Spec: spec/formats.md#ros-occupancy. Pre: 1 <= maxval <= 65535, v <= maxval; for raw maxval == 255 and
 /// !negate (DomainError).
 [[nodiscard]] Occupancy classify_pixel(std::uint32_t v, std::uint32_t maxval, const RosMapMeta& meta);
 

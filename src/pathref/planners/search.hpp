@@ -66,7 +66,7 @@ struct Outcome {
                                grid::CornerPolicy policy);
 
 /// Number of orthogonal and diagonal steps of a path (its exact cost is orthogonal +
-/// diagonal * sqrt(2)). Spec: search.astar (output "steps").
+/// diagonal * sqrt(2)). Source: pathref. Spec: search.astar (output "steps").
 /// Pre: consecutive cells are distinct 8-neighbours (DomainError).
 struct StepCounts {
   std::int64_t orthogonal = 0;

@@ -31,6 +31,7 @@ void register_all_modules(Registry& r) {
   register_search_rules(r);
   register_mecanum_rules(r);
   register_shi2022_rules(r);
+  register_han_rules(r);
   extensions().sealed = true;
   for (const ModuleRegistration fn : extensions().fns) fn(r);
 }

@@ -11,6 +11,7 @@ void register_metrics_rules(Registry& r);
 void register_search_rules(Registry& r);
 void register_mecanum_rules(Registry& r);
 void register_shi2022_rules(Registry& r);
+void register_han_rules(Registry& r);
 void register_all_modules(Registry& r);
 
 /// Modules of libraries layered on pathref that the core library cannot call (the inflation.*

@@ -1,0 +1,53 @@
+// Fuzz target: exact inflation of polygon scenes (spec/inflation.md).
+// pathref-fuzz-libs: pathref_geometry
+//
+// INVARIANT: for every scene text that parses, with at most 64x64 cells and 64 vertices in all
+// (larger scenes are skipped to keep executions fast), inflate_scene either returns or throws
+// pathref::DomainError (invalid polygon, bad start/goal); never another exception, never UB.
+// When inflate_polygons returns, every cell agrees with the brute-force definition
+// cell_blocked, and inflating with r + 1 blocks a superset (monotone in r).
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "pathref/core/error.hpp"
+#include "pathref/geometry/inflation.hpp"
+#include "pathref/geometry/scene.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  namespace g = pathref::geometry;
+  const std::string_view text(reinterpret_cast<const char*>(data), size);
+  std::optional<g::Scene> s;
+  try {
+    s = g::parse_scene_json(text, "fuzz.json");
+  } catch (const pathref::ParseError&) {
+    return 0;
+  }
+  std::size_t vertices = 0;
+  for (const auto& p : s->polygons) vertices += p.vertices.size();
+  if (s->width > 64 || s->height > 64 || vertices > 64) return 0;
+  try {
+    (void)g::inflate_scene(*s);
+  } catch (const pathref::DomainError&) {
+  }
+  std::optional<pathref::grid::Grid> grid;
+  try {
+    grid = g::inflate_polygons(*s);
+  } catch (const pathref::DomainError&) {
+    return 0;  // invalid polygon
+  }
+  for (std::int64_t y = 0; y < s->height; ++y)
+    for (std::int64_t x = 0; x < s->width; ++x)
+      if (grid->blocked({x, y}) != g::cell_blocked(*s, {x, y})) __builtin_trap();
+  g::Scene wider = *s;
+  if (auto one = g::parse_decimal("1"); one && wider.margin.is_zero()) {
+    wider.margin = *one;
+    const pathref::grid::Grid w = g::inflate_polygons(wider);
+    for (std::int64_t y = 0; y < s->height; ++y)
+      for (std::int64_t x = 0; x < s->width; ++x)
+        if (grid->blocked({x, y}) && !w.blocked({x, y})) __builtin_trap();
+  }
+  return 0;
+}
