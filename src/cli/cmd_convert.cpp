@@ -57,9 +57,9 @@ int run_convert(const ConvertOptions& o) {
 
 void add_map_read_options(CLI::App* cmd, MapReadArgs& args) {
   cmd->add_option("--format", args.format,
-                  "map format: auto (by extension, spec/formats.md#detection), pathref-grid, movingai, matrix")
+                  "map format: auto (by extension, spec/formats.md#detection), pathref-grid, movingai, matrix, ros")
       ->type_name("FORMAT")
-      ->check(CLI::IsMember({"auto", "pathref-grid", "movingai", "matrix"}))
+      ->check(CLI::IsMember({"auto", "pathref-grid", "movingai", "matrix", "ros"}))
       ->capture_default_str();
   cmd->add_option("--swamp", args.swamp, "MovingAI 'S' (swamp) cells: free or blocked")
       ->type_name("free|blocked")
@@ -68,6 +68,10 @@ void add_map_read_options(CLI::App* cmd, MapReadArgs& args) {
   cmd->add_option("--water", args.water, "MovingAI 'W' (water) cells: free or blocked")
       ->type_name("free|blocked")
       ->check(CLI::IsMember({"free", "blocked"}))
+      ->capture_default_str();
+  cmd->add_option("--unknown", args.unknown, "ROS map cells that are neither free nor occupied: blocked or free")
+      ->type_name("blocked|free")
+      ->check(CLI::IsMember({"blocked", "free"}))
       ->capture_default_str();
   cmd->add_option("--max-side", args.max_side, "largest width or height a map may have (default 268435456)")
       ->type_name("N");
@@ -80,6 +84,7 @@ io::MapReadOptions map_read_options(const MapReadArgs& args) {
   o.format = io::parse_map_format(args.format);
   o.terrain.swamp_free = args.swamp == "free";
   o.terrain.water_free = args.water == "free";
+  o.ros_unknown = io::parse_unknown_as(args.unknown);
   if (!args.max_side.empty()) o.limits.max_side = parse_limit(args.max_side, "--max-side");
   if (!args.max_cells.empty()) o.limits.max_cells = parse_limit(args.max_cells, "--max-cells");
   return o;

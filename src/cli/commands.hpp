@@ -25,10 +25,11 @@ struct MapReadArgs {
   std::string format = "auto";
   std::string swamp = "free";
   std::string water = "blocked";
+  std::string unknown = "blocked";  ///< ROS maps: what unknown cells become
   std::string max_side;   ///< "" = default
   std::string max_cells;  ///< "" = default
 };
-/// Adds --format, --swamp, --water, --max-side, --max-cells to `cmd` (defined in cmd_convert.cpp).
+/// Adds --format, --swamp, --water, --unknown, --max-side, --max-cells to `cmd` (defined in cmd_convert.cpp).
 void add_map_read_options(CLI::App* cmd, MapReadArgs& args);
 /// The library options for `args`; UsageError for a bad --max-side / --max-cells value.
 [[nodiscard]] io::MapReadOptions map_read_options(const MapReadArgs& args);

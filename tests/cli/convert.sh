@@ -57,6 +57,14 @@ expect_exit 0 "" plan --map "$tmp/warehouse.dat" --algo astar --start 0,8 --goal
 expect_exit 2 "$tmp/warehouse.dat:1:1: expected 'type octile' as the first line" plan --map "$tmp/warehouse.dat" --format movingai --algo astar --start 0,8 --goal 11,0
 expect_exit 2 "the map defines no start: give --start X,Y" plan --map "$m" --algo astar
 
+# ROS map_server maps (YAML + PGM) by extension; --unknown decides the 6 unexplored cells.
+r=tests/data/ros/office.yaml
+expect_exit 0 "" plan --map "$r" --algo astar --start 1,1 --goal 14,1
+"$pathref" convert "$r" --to matrix >"$tmp/r1"; "$pathref" convert "$r" --format ros --unknown free --to matrix >"$tmp/r2"
+[ "$(grep -o 1 "$tmp/r1" | wc -l)" -eq $(( $(grep -o 1 "$tmp/r2" | wc -l) + 6 )) ] || { echo "FAIL: --unknown"; exit 1; }
+expect_exit 2 "$r:1:8: the image is a 16x10 grid, which exceeds the limit of 15 cells per side" convert "$r" --to matrix --max-side 15
+expect_exit 2 "--unknown: maybe not in {blocked,free}" convert "$r" --to matrix --unknown maybe
+
 # Errors: file:line:column and what was expected; unknown formats; missing files; .scen.
 printf 'G=[0 0 1;\n1 2 0];\n' >"$tmp/bad.m"
 expect_exit 2 "pathref: error: $tmp/bad.m:2:3: expected 0 (free) or 1 (obstacle), got '2'" convert "$tmp/bad.m" --to movingai
@@ -70,7 +78,7 @@ expect_exit 2 "$tmp/huge.map:2:8: height must be between 1 and 5000, got '100000
 expect_exit 2 "cannot read map file '$tmp/none.map'" convert "$tmp/none.map" --to matrix
 expect_exit 2 "is a MovingAI scenario file, not a map: run it with pathref scen" plan --map tests/data/movingai/rooms40x30.map.scen --algo astar
 expect_exit 2 "--to: png not in {pathref-grid,movingai,matrix,matlab}" convert "$m" --to png
-expect_exit 2 "--format: png not in {auto,pathref-grid,movingai,matrix}" convert "$m" --to matrix --format png
+expect_exit 2 "--format: png not in {auto,pathref-grid,movingai,matrix,ros}" convert "$m" --to matrix --format png
 expect_exit 2 "--max-cells expects a decimal integer from 1 to 268435456, got '268435457'" convert "$m" --to matrix --max-cells 268435457
 expect_exit 2 "cannot write '$tmp/no/dir/x'" convert "$m" --to matrix -o "$tmp/no/dir/x"
 echo "convert: ok"

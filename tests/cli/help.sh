@@ -18,7 +18,11 @@ help() {
   done
 }
 
-help -- plan maps eval golden
+help -- plan maps eval golden scen convert inflate drive
+help scen -- --map --algo --every --digits --json --format --max-side
+help convert -- --to --format --swamp --water --unknown --max-side --max-cells
+help inflate -- --out --svg scene
+help drive -- --path --base --cell --svg --json
 help plan -- --map --builtin --algo --start --goal --seed --policy --set --json --json-out --svg astar
 help maps -- --svg name
 help eval -- --list rule

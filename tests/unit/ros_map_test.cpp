@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "pathref/core/error.hpp"
+#include "pathref/io/map_file.hpp"
 #include "pathref/io/ros_map.hpp"
 
 using pathref::ParseError;
@@ -92,6 +93,40 @@ TEST_CASE("ros-map: ROS 1 map_saver style P5 map (office.yaml) loads", "[ros_map
   CHECK(freed.unknown_cells == 6);
   CHECK(freed.map.grid.free(Cell{12, 8}));
   CHECK(freed.map.grid.blocked_count() == g.blocked_count() - 6);
+}
+
+TEST_CASE("ros-map: load_map_file detects .yaml/.yml, honours --unknown and the limits", "[ros_map]") {
+  using pathref::io::detect_map_format;
+  using pathref::io::load_map_file;
+  using pathref::io::MapFormat;
+  using pathref::io::MapReadOptions;
+  CHECK(detect_map_format("a/office.yaml", "") == MapFormat::ros);
+  CHECK(detect_map_format("a/OFFICE.YML", "pathref-grid 1") == MapFormat::ros);
+  CHECK(detect_map_format("a/office.txt", "image: office.pgm") == MapFormat::matrix);
+  const auto direct = load_ros_map(data_dir + "office.yaml");
+  const auto m = load_map_file(data_dir + "office.yaml", MapReadOptions{});
+  CHECK(m.format == MapFormat::ros);
+  CHECK(m.map.grid == direct.map.grid);
+  MapReadOptions freed;
+  freed.ros_unknown = UnknownAs::free;
+  CHECK(load_map_file(data_dir + "office.yaml", freed).map.grid.blocked_count() ==
+        direct.map.grid.blocked_count() - 6);
+  // An explicit --format ros reads a YAML file whatever its name would say.
+  MapReadOptions forced;
+  forced.format = MapFormat::ros;
+  CHECK(load_map_file(data_dir + "office.yaml", forced).map.grid == direct.map.grid);
+  // Limits: checked on the image's size, reported at the YAML's image value (line 1, column 8).
+  MapReadOptions side;
+  side.limits = pathref::io::ReadLimits{15, 1000};
+  CHECK_THROWS_WITH(load_map_file(data_dir + "office.yaml", side),
+                    data_dir + "office.yaml:1:8: the image is a 16x10 grid, which exceeds the limit of 15 cells per side");
+  MapReadOptions cells;
+  cells.limits = pathref::io::ReadLimits{100, 159};
+  CHECK_THROWS_WITH(load_map_file(data_dir + "office.yaml", cells),
+                    data_dir + "office.yaml:1:8: the image is a 16x10 grid, which exceeds the limit of 159 cells");
+  // The text entry point cannot read a two-file map.
+  CHECK_THROWS_AS(pathref::io::parse_map_text("image: x.pgm", "m.yaml", MapFormat::ros, MapReadOptions{}),
+                  pathref::UsageError);
 }
 
 TEST_CASE("ros-map: plain P2 map with negate 1 and maxval 15 (corridor.yaml)", "[ros_map]") {

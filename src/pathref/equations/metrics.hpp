@@ -21,7 +21,7 @@ inline constexpr std::int64_t max_abs_coordinate = std::int64_t{1} << 25;
 
 /// Euclidean distance between the centres of a and b: sqrt(dx^2 + dy^2), correctly rounded
 /// (dx, dy exact integers). Source: Shi et al. 2022 Eq. (4), doi:10.3389/fbioe.2022.905983.
-/// Spec: metrics.length. Pre: |coordinates| <= 2^25 (DomainError). Post: >= 0; 0 iff a == b.
+/// Spec: metrics.length, shi2022.eq4. Pre: |coordinates| <= 2^25 (DomainError). Post: >= 0; 0 iff a == b.
 [[nodiscard]] double centre_distance(grid::Cell a, grid::Cell b);
 
 /// Path length: sum of centre distances of consecutive cells, left to right.
@@ -37,7 +37,7 @@ inline constexpr std::int64_t max_abs_coordinate = std::int64_t{1} << 25;
 [[nodiscard]] double turning_angle(grid::Cell a, grid::Cell b, grid::Cell c);
 
 /// The turning angle (radians) at each interior node, in path order (n - 2 values; none for
-/// n <= 2). Source: Shi et al. 2022 Eq. (17). Spec: metrics.turn-angle. Pre: the path domain.
+/// n <= 2). Source: Shi et al. 2022 Eq. (17). Spec: metrics.turn-angle, shi2022.eq17. Pre: the path domain.
 /// Post: every value in [0, pi]. Golden: golden/metrics/metrics.turn-angle.json
 [[nodiscard]] std::vector<double> turning_angles(std::span<const grid::Cell> path);
 

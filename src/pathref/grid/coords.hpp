@@ -2,7 +2,7 @@
 /// \file coords.hpp
 /// Cell-centre coordinates: Shi et al. 2022 Eq. (1), corrected (the printed equation is wrong
 /// under either numbering of i; see spec/grid.md r[grid.coord]).
-/// Spec: grid.coord
+/// Spec: grid.coord, shi2022.eq1 (the same function, indexed under both rules)
 #include <cstdint>
 #include <string_view>
 

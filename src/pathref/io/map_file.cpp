@@ -66,7 +66,8 @@ MapFormat parse_map_format(std::string_view name) {
   if (name == "pathref-grid") return MapFormat::pathref_grid;
   if (name == "movingai") return MapFormat::movingai;
   if (name == "matrix") return MapFormat::matrix;
-  throw UsageError(fmt::format("unknown map format '{}' (known: auto, pathref-grid, movingai, matrix)", name));
+  if (name == "ros") return MapFormat::ros;
+  throw UsageError(fmt::format("unknown map format '{}' (known: auto, pathref-grid, movingai, matrix, ros)", name));
 }
 
 std::string_view to_string(MapFormat format) noexcept {
@@ -75,6 +76,7 @@ std::string_view to_string(MapFormat format) noexcept {
     case MapFormat::pathref_grid: return "pathref-grid";
     case MapFormat::movingai: return "movingai";
     case MapFormat::matrix: return "matrix";
+    case MapFormat::ros: return "ros";
   }
   return "auto";
 }
@@ -129,6 +131,7 @@ MapFormat detect_map_format(std::string_view path, std::string_view head) {
   const std::string ext = extension_of(path);
   if (ext == ".map") return MapFormat::movingai;
   if (ext == ".m" || ext == ".csv") return MapFormat::matrix;
+  if (ext == ".yaml" || ext == ".yml") return MapFormat::ros;
   if (starts_with_word(head, "pathref-grid")) return MapFormat::pathref_grid;
   if (starts_with_word(head, "type")) return MapFormat::movingai;
   return MapFormat::matrix;
@@ -155,6 +158,9 @@ MapFile parse_map_text(std::string_view text_in, std::string_view filename, MapF
       }
       return m;
     }
+    case MapFormat::ros:
+      throw UsageError(fmt::format("'{}': a ROS map is a YAML file and its image; read it with load_map_file "
+                                   "(pathref plan --map FILE.yaml) or parse_ros_map", filename));
     case MapFormat::automatic: break;
   }
   throw DomainError("parse_map_text: the format must not be 'auto'");
@@ -182,6 +188,23 @@ LoadedMapFile load_map_file(const std::string& path, const MapReadOptions& optio
   check_limits(options.limits);
   if (options.format == MapFormat::automatic && extension_of(path) == ".scen")
     throw UsageError(fmt::format("'{}' is a MovingAI scenario file, not a map: run it with pathref scen", path));
+  if (options.format == MapFormat::ros ||
+      (options.format == MapFormat::automatic && detect_map_format(path, "") == MapFormat::ros)) {
+    RosMapOptions ros;
+    ros.unknown = options.ros_unknown;
+    RosMap r = load_ros_map(path, ros);
+    const std::int64_t w = r.map.grid.width();
+    const std::int64_t h = r.map.grid.height();
+    if (w > options.limits.max_side || h > options.limits.max_side)
+      throw ParseError(path, r.meta.image_line, r.meta.image_column,
+                       fmt::format("the image is a {}x{} grid, which exceeds the limit of {} cells per side", w, h,
+                                   options.limits.max_side));
+    if (w > options.limits.max_cells / h)
+      throw ParseError(path, r.meta.image_line, r.meta.image_column,
+                       fmt::format("the image is a {}x{} grid, which exceeds the limit of {} cells", w, h,
+                                   options.limits.max_cells));
+    return LoadedMapFile{std::move(r.map), MapFormat::ros};
+  }
   const std::string text_in = read_text_file(path, "map file");
   const MapFormat format =
       options.format == MapFormat::automatic ? detect_map_format(path, text_in) : options.format;

@@ -1,9 +1,10 @@
 #pragma once
 /// \file map_file.hpp
-/// Reading any map format pathref knows (pathref-grid 1, MovingAI `.map`, 0/1 matrices), chosen
+/// Reading any map format pathref knows (pathref-grid 1, MovingAI `.map`, 0/1 matrices, ROS
+/// map_server YAML + PGM), chosen
 /// by the file's extension or given explicitly, plus what the format readers share: the read
 /// limits, the MovingAI terrain choice, and the line splitting of spec/formats.md#line-endings.
-/// Spec: spec/formats.md#map-files (detection, limits, options), #movingai-map, #matrix.
+/// Spec: spec/formats.md#map-files (detection, limits, options), #movingai-map, #matrix, #ros-map.
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -12,6 +13,7 @@
 
 #include "pathref/grid/grid.hpp"
 #include "pathref/io/grid_text.hpp"
+#include "pathref/io/ros_map.hpp"
 
 namespace pathref::io {
 
@@ -36,15 +38,16 @@ struct MovingAiTerrain {
 };
 
 /// The map formats. `automatic` means: decide by the file name (detect_map_format).
-enum class MapFormat { automatic, pathref_grid, movingai, matrix };
+enum class MapFormat { automatic, pathref_grid, movingai, matrix, ros };
 
-/// "auto" | "pathref-grid" | "movingai" | "matrix" -> format; UsageError otherwise.
+/// "auto" | "pathref-grid" | "movingai" | "matrix" | "ros" -> format; UsageError otherwise.
 [[nodiscard]] MapFormat parse_map_format(std::string_view name);
 /// The inverse of parse_map_format.
 [[nodiscard]] std::string_view to_string(MapFormat format) noexcept;
 
 /// The format of a map file from its name and its first bytes (spec/formats.md#detection):
-/// `.map` -> movingai; `.m` and `.csv` -> matrix; any other name -> pathref_grid when the text
+/// `.map` -> movingai; `.m` and `.csv` -> matrix; `.yaml` and `.yml` -> ros (map_server YAML);
+/// any other name -> pathref_grid when the text
 /// starts with "pathref-grid", movingai when it starts with "type", else matrix.
 /// Never returns automatic. Pre: none.
 [[nodiscard]] MapFormat detect_map_format(std::string_view path, std::string_view head);
@@ -54,6 +57,8 @@ struct MapReadOptions {
   MapFormat format = MapFormat::automatic;
   MovingAiTerrain terrain;
   ReadLimits limits;
+  /// ROS maps: what unknown cells become (spec/formats.md#ros-occupancy; default blocked).
+  UnknownAs ros_unknown = UnknownAs::blocked;
 };
 
 /// A map read from a file, with the format it was read as.
@@ -62,7 +67,8 @@ struct LoadedMapFile {
   MapFormat format = MapFormat::pathref_grid;
 };
 
-/// Parses `text` as `format` (not automatic: DomainError). ParseError (naming `filename`) for any
+/// Parses `text` as `format` (not automatic: DomainError; not ros, which is two files: UsageError
+/// pointing to load_map_file / parse_ros_map). ParseError (naming `filename`) for any
 /// deviation from that format's grammar or the limits. pathref-grid's own reader checks its fixed
 /// limit of Grid::max_cells before allocating and bounds memory by the text size; lower `limits`
 /// are then checked on its result and reported at the width in its `size` line.
@@ -76,7 +82,9 @@ struct LoadedMapFile {
 [[nodiscard]] std::string read_text_file(const std::string& path, std::string_view what);
 
 /// Reads a map file in the given or detected format (spec/formats.md#map-files). A `.scen` file
-/// is refused with a UsageError pointing to `pathref scen`.
+/// is refused with a UsageError pointing to `pathref scen`. A ROS map is read with load_ros_map
+/// (the image is resolved against the YAML's directory); the limits are then checked on its size
+/// and a map over them is a ParseError at the YAML's `image` value.
 [[nodiscard]] LoadedMapFile load_map_file(const std::string& path, const MapReadOptions& options);
 
 /// The output formats of `pathref convert` (spec/formats.md#cli-convert).

@@ -150,7 +150,8 @@ Panel map_panel(const grid::Grid& g, std::optional<grid::Cell> start,
     std::string pts;
     for (const auto& c : paths[i].path) {
       const auto [cx, cy] = cell_centre_px(g, c, s);
-      pts += (pts.empty() ? "" : " ") + num(cx) + "," + num(cy);
+      if (!pts.empty()) pts += ' ';
+      pts += fmt::format("{},{}", num(cx), num(cy));
     }
     b += fmt::format("<polyline class=\"path\" data-label=\"{}\" points=\"{}\" fill=\"none\" stroke=\"{}\" "
                      "stroke-width=\"{}\" stroke-linejoin=\"round\" stroke-linecap=\"round\"/>\n",
@@ -302,7 +303,8 @@ Panel chart_panel(const std::vector<Series>& series, const ChartOptions& opt) {
         flush();
         continue;
       }
-      pts += (pts.empty() ? "" : " ") + num(px(s.x[i])) + "," + num(py(s.y[i]));
+      if (!pts.empty()) pts += ' ';
+      pts += fmt::format("{},{}", num(px(s.x[i])), num(py(s.y[i])));
       ++run;
     }
     flush();

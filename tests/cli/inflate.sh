@@ -1,0 +1,48 @@
+#!/usr/bin/env bash
+# `pathref inflate` (spec/inflation.md, section CLI): a scene becomes a pathref-grid 1 map that
+# `pathref plan` reads; --out/--svg write files; bad scenes are exit 2 with a located message.
+# Usage: bash tests/cli/inflate.sh path/to/pathref   (from the repository root)
+set -euo pipefail
+pathref=$1
+tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
+
+expect_exit() {
+  local want=$1 msg=$2; shift 2
+  set +e; "$pathref" "$@" >"$tmp/out" 2>"$tmp/err"; local got=$?; set -e
+  if [ "$got" != "$want" ]; then
+    echo "FAIL: pathref $* exited $got, expected $want"; cat "$tmp/out" "$tmp/err"; exit 1
+  fi
+  [ -z "$msg" ] || grep -qF -- "$msg" "$tmp/err" || { echo "FAIL: pathref $*: stderr lacks '$msg':"; cat "$tmp/err"; exit 1; }
+}
+
+s=tests/data/scenes/ushape.json
+# stdout and --out give the same text; it is a 20x16 pathref-grid map with the scene's start/goal.
+"$pathref" inflate "$s" >"$tmp/a.txt"
+"$pathref" inflate "$s" --out "$tmp/b.txt" --svg "$tmp/u.svg"
+cmp -s "$tmp/a.txt" "$tmp/b.txt" || { echo "FAIL: stdout and --out differ"; exit 1; }
+head -1 "$tmp/a.txt" | grep -q '^pathref-grid 1' || { echo "FAIL: not pathref-grid 1"; head -3 "$tmp/a.txt"; exit 1; }
+grep -q '^size 20 16' "$tmp/a.txt" || { echo "FAIL: size"; cat "$tmp/a.txt"; exit 1; }
+grep -q '<svg' "$tmp/u.svg" || { echo "FAIL: no SVG written"; exit 1; }
+# Inflation blocks strictly more cells than r = 0 would: the U-shape's own cells are a subset.
+python3 - "$s" "$tmp" "$pathref" <<'PY'
+import json, subprocess, sys
+scene, tmp, exe = sys.argv[1], sys.argv[2], sys.argv[3]
+d = json.load(open(scene)); d["radius"] = 0; d["margin"] = 0
+open(tmp + "/zero.json", "w").write(json.dumps(d))
+def blocked(path):
+    rows = [l for l in subprocess.run([exe, "inflate", path], check=True, capture_output=True, text=True).stdout.splitlines()]
+    grid = rows[rows.index("map") + 1:] if "map" in rows else None
+    assert grid, rows[:8]
+    return {(x, y) for y, row in enumerate(reversed(grid)) for x, ch in enumerate(row) if ch == "#"}
+inflated, bare = blocked(scene), blocked(tmp + "/zero.json")
+assert bare and bare < inflated, (len(bare), len(inflated))
+PY
+# The inflated map plans.
+expect_exit 0 "" plan --map "$tmp/a.txt" --algo astar
+# Errors.
+expect_exit 2 "cannot read" inflate "$tmp/none.json"
+printf '{"format": "pathref-scene 1", "width": 0}' >"$tmp/bad.json"
+expect_exit 2 "$tmp/bad.json" inflate "$tmp/bad.json"
+printf '{"format": "pathref-scene 1",\n  "width": 4,,}' >"$tmp/syntax.json"
+expect_exit 2 "$tmp/syntax.json:2" inflate "$tmp/syntax.json"
+echo "inflate: ok"
