@@ -294,16 +294,20 @@ std::string to_scene_json(const Scene& s) {
 }
 
 Scene read_scene_file(const std::string& path) {
+  // Messages as for map files (spec/formats.md#limits): "cannot read scene file 'F': REASON".
   std::error_code ec;
   const auto st = std::filesystem::status(path, ec);
-  if (ec || !std::filesystem::exists(st)) throw UsageError("cannot open scene file: " + path);
-  if (!std::filesystem::is_regular_file(st)) throw UsageError("not a regular file: " + path);
+  if (ec || !std::filesystem::exists(st))
+    throw UsageError("cannot read scene file '" + path + "': " + (ec ? ec.message() : std::string("no such file")));
+  if (!std::filesystem::is_regular_file(st))
+    throw UsageError("cannot read scene file '" + path + "': not a regular file");
   const auto size = std::filesystem::file_size(path, ec);
-  if (ec) throw UsageError("cannot read scene file: " + path);
+  if (ec) throw UsageError("cannot read scene file '" + path + "': " + ec.message());
   if (size > max_scene_file_bytes)
-    throw UsageError("scene file larger than 64 MiB: " + path);
+    throw UsageError("scene file '" + path + "' has " + std::to_string(size) + " bytes, more than the limit of " +
+                     std::to_string(max_scene_file_bytes));
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw UsageError("cannot open scene file: " + path);
+  if (!in) throw UsageError("cannot read scene file '" + path + "': cannot open");
   std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   return parse_scene_json(text, path);
 }
