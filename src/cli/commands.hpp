@@ -34,5 +34,7 @@ void add_map_read_options(CLI::App* cmd, MapReadArgs& args);
 /// The library options for `args`; UsageError for a bad --max-side / --max-cells value.
 [[nodiscard]] io::MapReadOptions map_read_options(const MapReadArgs& args);
 void add_inflate_command(CLI::App& app, Action& run);  // inflate (spec/inflation.md#cli)
+void add_simulate_command(CLI::App& app, Action& run);  // simulate (spec/han-sim.md#cli)
+void add_reproduce_command(CLI::App& app, Action& run);  // reproduce (spec/reproduce.md)
 
 }  // namespace pathref::cli

@@ -23,6 +23,8 @@ int main(int argc, char** argv) {
   pathref::cli::add_scen_command(app, run);
   pathref::cli::add_convert_command(app, run);
   pathref::cli::add_inflate_command(app, run);
+  pathref::cli::add_simulate_command(app, run);
+  pathref::cli::add_reproduce_command(app, run);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -1,6 +1,10 @@
 #include "pathref/planners/registry_list.hpp"
 
 #include "pathref/planners/search.hpp"
+#include "pathref/planners/ant_colony.hpp"
+#include "pathref/planners/genetic.hpp"
+#include "pathref/planners/hybrid.hpp"
+#include "pathref/sim/iaco_astar.hpp"
 
 namespace pathref::planners {
 std::vector<Planner> all_planners() {
@@ -8,6 +12,20 @@ std::vector<Planner> all_planners() {
   // search planners (spec/search.md): added by the search module
   v.push_back(make_astar_planner());
   v.push_back(make_dijkstra_planner());
+  // ant-colony planners (spec/shi2022-aco.md, spec/han-iaco.md): added by the ACO module
+  v.push_back(make_aco_planner());
+  v.push_back(make_iaco_shi_planner());
+  v.push_back(make_iaco_shi_nomin_planner());
+  v.push_back(make_iaco_han_planner());
+  v.push_back(make_astar_han_planner());
+  // genetic planners and GA-ACO hybrids (spec/shi2022-ga.md): added by the GA module
+  v.push_back(make_ga_planner());
+  v.push_back(make_iga_shi_planner());
+  v.push_back(make_iga_shi_nomax_planner());
+  v.push_back(make_hybrid_ga_aco_planner());
+  v.push_back(make_iha_planner());
+  // IACO-A* (spec/han-sim.md): added by the simulation module
+  v.push_back(make_iaco_astar_planner());
   return v;
 }
 }  // namespace pathref::planners

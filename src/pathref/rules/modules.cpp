@@ -32,6 +32,9 @@ void register_all_modules(Registry& r) {
   register_mecanum_rules(r);
   register_shi2022_rules(r);
   register_han_rules(r);
+  register_han_sim_rules(r);
+  register_ga_planner_rules(r);
+  register_aco_planner_rules(r);
   extensions().sealed = true;
   for (const ModuleRegistration fn : extensions().fns) fn(r);
 }

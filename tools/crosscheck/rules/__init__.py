@@ -7,9 +7,12 @@ from . import mecanum
 from . import shi2022
 from . import inflation
 from . import han
+from . import han_sim
+from . import ga_planners
+from . import aco_planners
 
 RULES = {}
-for _module in (rng, search, grid, metrics, mecanum, shi2022, han, inflation):
+for _module in (rng, search, grid, metrics, mecanum, shi2022, han, han_sim, inflation, ga_planners, aco_planners):
     for _id, _fn in _module.RULES.items():
         assert _id not in RULES, _id
         RULES[_id] = _fn

@@ -1,0 +1,268 @@
+// `pathref reproduce shi2022 --simple FILE --complex FILE ...` and `pathref reproduce han ...`:
+// run a paper's experimental protocol with the registered planners and write the report
+// (markdown), every number (reproduce.json) and the figures (SVG). Spec: spec/reproduce.md.
+#include <fmt/core.h>
+#include <sys/utsname.h>
+
+#include <chrono>
+#include <cstdint>
+#include <ctime>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "commands.hpp"
+#include "pathref/core/error.hpp"
+#include "pathref/grid/grid.hpp"
+#include "pathref/io/map_file.hpp"
+#include "pathref/reproduce/han.hpp"
+#include "pathref/reproduce/shi2022.hpp"
+
+namespace pathref::cli {
+
+namespace {
+
+using Json = nlohmann::json;
+
+struct ReproduceOptions {
+  std::string simple;
+  std::string complex;
+  std::string runs;
+  std::string sweep_runs;
+  std::string maps_per_edge;
+  std::string edges;
+  std::string seed = "1";
+  std::string out_dir = "docs/reproduction";
+  std::string policy = "strict";
+  std::string orientation = "paper";
+  bool quick = false;
+};
+
+/// A decimal integer in [lo, hi], digits only (leading zeros are decimal); UsageError otherwise.
+std::int64_t parse_int(const std::string& text, const char* option, std::int64_t lo, std::int64_t hi) {
+  const bool digits =
+      !text.empty() && text.size() <= 18 && text.find_first_not_of("0123456789") == std::string::npos;
+  std::int64_t v = 0;
+  if (digits)
+    for (const char c : text) v = v * 10 + (c - '0');
+  if (!digits || v < lo || v > hi)
+    throw UsageError(fmt::format("{} expects a decimal integer from {} to {}, got '{}'", option, lo, hi, text));
+  return v;
+}
+
+std::string iso_now_utc() {
+  const std::time_t t = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
+  std::tm tm{};
+  gmtime_r(&t, &tm);
+  char buf[32];
+  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &tm);
+  return buf;
+}
+
+std::string machine_description() {
+  std::string s;
+  utsname u{};
+  if (uname(&u) == 0) s = fmt::format("{} {} {}", u.sysname, u.release, u.machine);
+  std::ifstream cpu("/proc/cpuinfo");
+  std::string line;
+  while (std::getline(cpu, line)) {
+    if (line.rfind("model name", 0) == 0) {
+      const auto colon = line.find(':');
+      if (colon != std::string::npos) s += "; " + line.substr(colon + 2);
+      break;
+    }
+  }
+  s += fmt::format("; {} hardware threads", std::thread::hardware_concurrency());
+  return s;
+}
+
+/// CMAKE_BUILD_TYPE from the CMakeCache.txt beside the running binary, else what the compiler says.
+std::string build_type() {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+  if (!ec) {
+    std::ifstream cache(exe.parent_path() / "CMakeCache.txt");
+    std::string line;
+    while (std::getline(cache, line))
+      if (line.rfind("CMAKE_BUILD_TYPE:", 0) == 0) {
+        const auto eq = line.find('=');
+        if (eq != std::string::npos && eq + 1 < line.size()) return line.substr(eq + 1) + " (CMakeCache.txt)";
+      }
+  }
+#if defined(NDEBUG) && defined(__OPTIMIZE__)
+  return "optimised, NDEBUG (no CMakeCache.txt beside the binary)";
+#elif defined(__OPTIMIZE__)
+  return "optimised, assertions on (no CMakeCache.txt beside the binary)";
+#else
+  return "unoptimised (no CMakeCache.txt beside the binary)";
+#endif
+}
+
+void write_file(const std::filesystem::path& p, const std::string& text) {
+  std::error_code ec;
+  std::filesystem::create_directories(p.parent_path(), ec);
+  std::ofstream out(p, std::ios::binary);
+  out << text;
+  out.close();
+  if (ec || !out) throw UsageError(fmt::format("cannot write '{}'", p.string()));
+}
+
+grid::Grid load_grid(const std::string& file) {
+  io::MapReadOptions opt;
+  return io::load_map_file(file, opt).map.grid;
+}
+
+/// Writes md, json and figures; prints one "wrote" line per file, then the verdict counts.
+int write_outputs(const Json& doc, const std::string& out_dir, const std::string& paper, const std::string& md,
+                  const std::vector<std::pair<std::string, std::string>>& figures) {
+  namespace fs = std::filesystem;
+  const fs::path dir(out_dir);
+  std::vector<fs::path> written;
+  const fs::path md_path = dir / (paper + ".md");
+  const fs::path json_path = dir / paper / "reproduce.json";
+  write_file(json_path, doc.dump(1) + "\n");
+  written.push_back(json_path);
+  for (const auto& [name, svg] : figures) {
+    write_file(dir / paper / name, svg);
+    written.push_back(dir / paper / name);
+  }
+  write_file(md_path, md);
+  written.push_back(md_path);
+  for (const auto& p : written) fmt::print("wrote {}\n", p.string());
+  int holds = 0, fails = 0, untestable = 0;
+  for (const Json& c : doc.at("claims")) {
+    const auto v = c.at("verdict").get<std::string>();
+    if (v == "holds") ++holds;
+    else if (v == "does not hold") ++fails;
+    else ++untestable;
+  }
+  fmt::print("{}: {} claims: {} hold, {} do not hold, {} cannot be tested ({:.1f} s)\n", paper,
+             doc.at("claims").size(), holds, fails, untestable,
+             doc.at("provenance").at("total_wall_s").get<double>());
+  return 0;
+}
+
+reproduce::Progress progress_printer() {
+  return [](const std::string& line) { fmt::print(stderr, "[reproduce] {}\n", line); };
+}
+
+reproduce::Provenance provenance(const std::string& command) {
+  reproduce::Provenance p;
+  p.command = command;
+  p.build_type = build_type();
+  p.date_utc = iso_now_utc();
+  p.machine = machine_description();
+  p.pathref_version = PATHREF_VERSION;
+  return p;
+}
+
+int run_shi(const ReproduceOptions& o) {
+  reproduce::ShiConfig cfg;
+  cfg.runs = o.runs.empty() ? (o.quick ? 3 : 50) : parse_int(o.runs, "--runs", 1, 10000);
+  cfg.seed = static_cast<std::uint32_t>(parse_int(o.seed, "--seed", 0, 4294967295LL));
+  if (static_cast<std::uint64_t>(cfg.seed) + static_cast<std::uint64_t>(cfg.runs) - 1 > 4294967295ULL)
+    throw UsageError("--seed + --runs - 1 must not exceed 4294967295");
+  cfg.policy = grid::parse_corner_policy(o.policy);
+  cfg.orientation = reproduce::parse_orientation(o.orientation);
+  cfg.quick = o.quick;
+  cfg.simple = reproduce::ProtocolMap{o.simple, load_grid(o.simple)};
+  cfg.complex = reproduce::ProtocolMap{o.complex, load_grid(o.complex)};
+  std::string cmd = fmt::format(
+      "pathref reproduce shi2022 --simple {} --complex {} --runs {} --seed {} --policy {} --orientation {} --out-dir {}",
+      o.simple, o.complex, cfg.runs, cfg.seed, o.policy, o.orientation, o.out_dir);
+  if (o.quick) cmd += " --quick";
+  cfg.provenance = provenance(cmd);
+  cfg.progress = progress_printer();
+  const Json doc = reproduce::run_shi2022(cfg);
+  return write_outputs(doc, o.out_dir, "shi2022", reproduce::shi2022_markdown(doc, "shi2022", "shi2022/reproduce.json"),
+                       reproduce::shi2022_figures(doc));
+}
+
+int run_han_cmd(const ReproduceOptions& o) {
+  reproduce::HanConfig cfg;
+  cfg.runs = o.runs.empty() ? (o.quick ? 3 : 50) : parse_int(o.runs, "--runs", 1, 10000);
+  cfg.sweep_runs = o.sweep_runs.empty() ? (o.quick ? 2 : 3) : parse_int(o.sweep_runs, "--sweep-runs", 1, 10000);
+  cfg.maps_per_edge = o.maps_per_edge.empty() ? (o.quick ? 1 : 3) : parse_int(o.maps_per_edge, "--maps-per-edge", 1, 100);
+  cfg.seed = static_cast<std::uint32_t>(parse_int(o.seed, "--seed", 0, 4294967295LL));
+  cfg.policy = grid::parse_corner_policy(o.policy);
+  cfg.quick = o.quick;
+  if (o.edges.empty()) {
+    cfg.edges = o.quick ? std::vector<std::int64_t>{10, 15} : reproduce::han_protocol_edges();
+  } else {
+    std::stringstream in(o.edges);
+    std::string item;
+    while (std::getline(in, item, ',')) cfg.edges.push_back(parse_int(item, "--edges", 2, 1000));
+    if (cfg.edges.empty()) throw UsageError("--edges expects a comma-separated list of edges, got ''");
+  }
+  const std::uint64_t n_maps = cfg.edges.size() * static_cast<std::uint64_t>(cfg.maps_per_edge);
+  if (static_cast<std::uint64_t>(cfg.seed) + std::max<std::uint64_t>(n_maps, static_cast<std::uint64_t>(std::max(cfg.runs, cfg.sweep_runs))) - 1 >
+      4294967295ULL)
+    throw UsageError("--seed + number of maps (or runs) - 1 must not exceed 4294967295");
+  std::string edges;
+  for (const auto e : cfg.edges) edges += (edges.empty() ? "" : ",") + std::to_string(e);
+  std::string cmd = fmt::format(
+      "pathref reproduce han --runs {} --sweep-runs {} --maps-per-edge {} --edges {} --seed {} --policy {} --out-dir {}",
+      cfg.runs, cfg.sweep_runs, cfg.maps_per_edge, edges, cfg.seed, o.policy, o.out_dir);
+  if (o.quick) cmd += " --quick";
+  cfg.provenance = provenance(cmd);
+  cfg.progress = progress_printer();
+  const Json doc = reproduce::run_han(cfg);
+  return write_outputs(doc, o.out_dir, "han", reproduce::han_markdown(doc, "han", "han/reproduce.json"),
+                       reproduce::han_figures(doc));
+}
+
+void add_common(CLI::App* cmd, ReproduceOptions& o) {
+  cmd->add_option("--runs", o.runs, "runs per stochastic planner and map (default 50; 3 with --quick)")->type_name("N");
+  cmd->add_option("--seed", o.seed, "first seed; run r uses seed + r (spec/reproduce.md)")
+      ->type_name("S")
+      ->capture_default_str();
+  cmd->add_option("--out-dir", o.out_dir, "directory of the report, its JSON and figures")
+      ->type_name("DIR")
+      ->capture_default_str();
+  cmd->add_option("--policy", o.policy, "corner policy (spec/grid.md)")
+      ->type_name("P")
+      ->check(CLI::IsMember({"never", "strict", "one", "always"}))
+      ->capture_default_str();
+  cmd->add_flag("--quick", o.quick, "few runs, few iterations: a smoke test that finishes in seconds");
+}
+
+}  // namespace
+
+void add_reproduce_command(CLI::App& app, Action& run) {
+  static ReproduceOptions shi;
+  static ReproduceOptions han;
+  auto* cmd = app.add_subcommand("reproduce", "Run a paper's experiments and write the report, JSON and figures "
+                                              "(spec/reproduce.md)");
+  cmd->require_subcommand(1);
+  auto* s = cmd->add_subcommand("shi2022", "Shi et al. 2022, Tables 3-5 and Figures 8-12");
+  s->add_option("--simple", shi.simple, "the simple 20x20 map (e.g. matlab-maps/mapC_20x20_winsleo_traditional.txt)")
+      ->type_name("FILE")
+      ->required();
+  s->add_option("--complex", shi.complex, "the complex 20x20 map (e.g. matlab-maps/mapB_20x20_ga.txt)")
+      ->type_name("FILE")
+      ->required();
+  add_common(s, shi);
+  s->add_option("--orientation", shi.orientation,
+                "paper: the file's first row is y = 0 (Shi's frame); file: first row on top (spec/reproduce.md)")
+      ->type_name("O")
+      ->check(CLI::IsMember({"paper", "file"}))
+      ->capture_default_str();
+  s->callback([&run] { run = [] { return run_shi(shi); }; });
+  auto* h = cmd->add_subcommand("han", "Han (IJACSA), random maps of edge 10-100 m: convergence, length, time");
+  add_common(h, han);
+  h->add_option("--sweep-runs", han.sweep_runs, "runs per stochastic planner on maps of edges other than 10 (default 3; 2 with --quick)")
+      ->type_name("M");
+  h->add_option("--maps-per-edge", han.maps_per_edge, "random maps per edge (default 3; 1 with --quick)")->type_name("K");
+  h->add_option("--edges", han.edges, "comma-separated map edges (default 10,15,...,100; 10,15 with --quick)")
+      ->type_name("LIST");
+  h->callback([&run] { run = [] { return run_han_cmd(han); }; });
+}
+
+}  // namespace pathref::cli

@@ -1,0 +1,193 @@
+#include "pathref/equations/ga_operators.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+#include "pathref/core/error.hpp"
+
+namespace pathref::ga {
+
+InitReject parse_init_reject(std::string_view name) {
+  if (name == "blocked") return InitReject::blocked;
+  if (name == "near_obstacle") return InitReject::near_obstacle;
+  if (name == "shift") return InitReject::shift;
+  throw UsageError("unknown init_reject '" + std::string(name) +
+                   "' (expected blocked, near_obstacle or shift)");
+}
+
+std::string_view to_string(InitReject v) noexcept {
+  switch (v) {
+    case InitReject::blocked: return "blocked";
+    case InitReject::near_obstacle: return "near_obstacle";
+    case InitReject::shift: return "shift";
+  }
+  return "?";
+}
+
+namespace {
+
+bool has_blocked_neighbour(const grid::Grid& g, grid::Cell c) {
+  for (std::int64_t dy = -1; dy <= 1; ++dy)
+    for (std::int64_t dx = -1; dx <= 1; ++dx) {
+      if (dx == 0 && dy == 0) continue;
+      const grid::Cell n{c.x + dx, c.y + dy};
+      if (g.in_bounds(n) && g.blocked(n)) return true;
+    }
+  return false;
+}
+
+ChainRepair reject(const char* why) {
+  ChainRepair r;
+  r.reason = why;
+  return r;
+}
+
+}  // namespace
+
+ChainRepair connect_chain(const grid::Grid& g, std::span<const grid::Cell> genes,
+                          grid::CornerPolicy policy, MidRounding rounding, InitReject rej) {
+  require(genes.size() >= 2, "a chain needs at least two genes (start and goal)");
+  for (const grid::Cell c : genes) require(g.in_bounds(c), "a gene lies outside the grid");
+  for (const grid::Cell c : genes)
+    if (g.blocked(c)) return reject("blocked_gene");
+  std::vector<grid::Cell> p(genes.begin(), genes.end());
+  std::size_t k = 0;
+  std::int64_t inserted = 0;
+  while (k + 1 < p.size()) {
+    const grid::Cell a = p[k];
+    const grid::Cell b = p[k + 1];
+    const std::int64_t d = continuity_delta(a, b);
+    if (d == 0) {  // duplicate_gene = drop
+      p.erase(p.begin() + static_cast<std::ptrdiff_t>(k + 1));
+      continue;
+    }
+    if (d == 1) {
+      if (!grid::step_allowed(g, a, b, policy)) return reject("illegal_step");
+      ++k;
+      continue;
+    }
+    grid::Cell m = insertion_cell(a, b, rounding);
+    if (g.blocked(m) && rej == InitReject::shift) {
+      // The first free orthogonal neighbour of m other than a and b, in the order of the
+      // MATLAB code: left, right, then y + 1, y - 1.
+      bool moved = false;
+      for (const grid::Cell off : {grid::Cell{-1, 0}, grid::Cell{1, 0}, grid::Cell{0, 1}, grid::Cell{0, -1}}) {
+        const grid::Cell q{m.x + off.x, m.y + off.y};
+        if (g.free(q) && !(q == a) && !(q == b)) {
+          m = q;
+          moved = true;
+          break;
+        }
+      }
+      if (!moved) return reject("blocked_insert");
+      if (++inserted > g.cell_count()) return reject("insert_limit");
+    }
+    if (g.blocked(m)) return reject("blocked_insert");
+    if (rej == InitReject::near_obstacle && has_blocked_neighbour(g, m))
+      return reject("near_obstacle");
+    p.insert(p.begin() + static_cast<std::ptrdiff_t>(k + 1), m);
+  }
+  ChainRepair r;
+  r.feasible = true;
+  r.path = std::move(p);
+  r.reason = "ok";
+  return r;
+}
+
+std::vector<CrossPoint> crossover_points(std::span<const grid::Cell> a,
+                                         std::span<const grid::Cell> b) {
+  std::vector<CrossPoint> out;
+  if (a.size() < 3 || b.size() < 3) return out;
+  for (std::size_t k = 1; k + 1 < a.size(); ++k)
+    for (std::size_t j = 1; j + 1 < b.size(); ++j)
+      if (a[k] == b[j]) {
+        out.push_back(CrossPoint{k, j});
+        break;
+      }
+  return out;
+}
+
+Children crossover_at(std::span<const grid::Cell> a, std::span<const grid::Cell> b,
+                      CrossPoint point) {
+  require(point.k < a.size() && point.j < b.size(), "crossover point outside the parents");
+  require(a[point.k] == b[point.j], "a crossover point must be a common node");
+  Children c;
+  const auto k = static_cast<std::ptrdiff_t>(point.k);
+  const auto j = static_cast<std::ptrdiff_t>(point.j);
+  c.first.assign(a.begin(), a.begin() + k + 1);
+  c.first.insert(c.first.end(), b.begin() + j + 1, b.end());
+  c.second.assign(b.begin(), b.begin() + j + 1);
+  c.second.insert(c.second.end(), a.begin() + k + 1, a.end());
+  return c;
+}
+
+std::vector<grid::Cell> mutation_candidates(const grid::Grid& g, std::span<const grid::Cell> path,
+                                            std::size_t k, grid::CornerPolicy policy) {
+  require(path.size() >= 3 && k >= 1 && k + 2 <= path.size(),
+          "mutation position must be an interior gene 1 <= k <= n - 2");
+  const grid::Cell prev = path[k - 1];
+  const grid::Cell next = path[k + 1];
+  std::vector<grid::Cell> out;
+  // dy outer, dx inner: increasing cell index y * W + x (grid.neighbour-order).
+  for (std::int64_t dy = -1; dy <= 1; ++dy)
+    for (std::int64_t dx = -1; dx <= 1; ++dx) {
+      if (dx == 0 && dy == 0) continue;
+      const grid::Cell c{prev.x + dx, prev.y + dy};
+      if (c == path[k] || c == next) continue;
+      if (grid::step_allowed(g, prev, c, policy) && grid::step_allowed(g, c, next, policy))
+        out.push_back(c);
+    }
+  return out;
+}
+
+std::vector<grid::Cell> delete_redundant(const grid::Grid& g, std::span<const grid::Cell> path,
+                                         grid::CornerPolicy policy) {
+  std::vector<grid::Cell> p(path.begin(), path.end());
+  std::size_t i = 1;
+  while (i + 1 < p.size()) {
+    if (grid::step_allowed(g, p[i - 1], p[i + 1], policy)) {
+      p.erase(p.begin() + static_cast<std::ptrdiff_t>(i));
+      if (i > 1) --i;  // the deletion changed the neighbourhood of node i - 1: test it again
+    } else {
+      ++i;
+    }
+  }
+  return p;
+}
+
+std::vector<grid::Cell> remove_loops(std::span<const grid::Cell> path) {
+  std::vector<grid::Cell> out;
+  out.reserve(path.size());
+  for (const grid::Cell c : path) {
+    const auto it = std::find(out.begin(), out.end(), c);
+    if (it != out.end()) {
+      out.erase(it + 1, out.end());  // back to the first visit of c
+    } else {
+      out.push_back(c);
+    }
+  }
+  return out;
+}
+
+std::vector<std::size_t> elite_indices(std::span<const double> fitness, std::size_t count) {
+  require(count <= fitness.size(), "elite count exceeds the population");
+  for (const double f : fitness) require(std::isfinite(f), "fitness values must be finite");
+  std::vector<std::size_t> idx(fitness.size());
+  std::iota(idx.begin(), idx.end(), std::size_t{0});
+  std::stable_sort(idx.begin(), idx.end(),
+                   [&](std::size_t x, std::size_t y) { return fitness[x] > fitness[y]; });
+  idx.resize(count);
+  return idx;
+}
+
+std::size_t elite_count(std::size_t n, double fraction) {
+  require(std::isfinite(fraction) && fraction > 0.0 && fraction <= 1.0,
+          "elite fraction must lie in (0, 1]");
+  if (n == 0) return 0;
+  const double v = std::ceil(fraction * static_cast<double>(n));
+  const auto c = static_cast<std::size_t>(v);
+  return std::clamp(c, std::size_t{1}, n);
+}
+
+}  // namespace pathref::ga

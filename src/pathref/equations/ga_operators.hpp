@@ -1,0 +1,151 @@
+#pragma once
+/// \file ga_operators.hpp
+/// The path operators of Shi et al. 2022's genetic algorithms as pure functions: the repair of a
+/// chain of genes into a continuous path (population initialisation, Sec. 4.2 steps 2-3), the
+/// crossover at a common node (Figure 3), the point mutation (Figure 4), the deletion operator
+/// (Figure 6, Sec. 4.4.3) and elite retention (Sec. 4.4.3). Random choices are not made here:
+/// the caller draws (rng::uniform_index) and passes the chosen index, so every operator is a
+/// pure function of its arguments and golden vectors pin it without a generator.
+/// The GA planners (planners/genetic.hpp) compose these with the equations of ga.hpp.
+/// Spec: spec/shi2022-ga.md (shi2022.op.init, shi2022.op.crossover, shi2022.op.mutation,
+/// shi2022.op.deletion, shi2022.op.elite)
+#include <cstddef>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "pathref/equations/ga.hpp"
+#include "pathref/grid/grid.hpp"
+
+namespace pathref::ga {
+
+/// When an initial chain is rejected (spec shi2022.op.init, option `init_reject`).
+enum class InitReject {
+  blocked,        ///< an inserted cell is blocked, or a continuous step is not an allowed move (default)
+  near_obstacle,  ///< also when an inserted cell has a blocked cell among its 8 neighbours
+  shift,          ///< a blocked mid-point is replaced by its first free orthogonal neighbour
+                  ///< (x-1, y), (x+1, y), (x, y+1), (x, y-1) other than the pair's cells (the
+                  ///< widely copied MATLAB generate_continuous_path); rejected if none
+};
+/// "blocked" | "near_obstacle" | "shift" -> InitReject; UsageError otherwise. Spec: shi2022.op.init.
+[[nodiscard]] InitReject parse_init_reject(std::string_view name);
+[[nodiscard]] std::string_view to_string(InitReject v) noexcept;
+
+/// What connect_chain returns: the repaired path, or the reason the chain was rejected.
+struct ChainRepair {
+  bool feasible = false;
+  std::vector<grid::Cell> path;  ///< start..goal when feasible, else empty
+  std::string reason;            ///< "ok" | "blocked_gene" | "blocked_insert" | "near_obstacle" | "illegal_step" | "insert_limit"
+};
+
+/// Repairs a chain of genes g_0 (start), ..., g_m (goal) into a continuous path (Shi Sec. 4.2,
+/// population initialisation steps 2-3): scanning k = 0, 1, ... left to right, a pair with
+/// Delta = 0 (Eq. 8) drops the second gene; Delta = 1 needs grid::step_allowed (else rejected,
+/// "illegal_step") and advances k; Delta >= 2 inserts insertion_cell (Eq. 9) between them
+/// without advancing k, rejected if the inserted cell is blocked ("blocked_insert") or, under
+/// near_obstacle, has a blocked 8-neighbour inside the map ("near_obstacle"); under shift a
+/// blocked mid-point is replaced by its first free orthogonal neighbour (InitReject::shift) and
+/// the chain is rejected after more than W * H such shifts ("insert_limit"). A blocked gene is rejected
+/// first ("blocked_gene").
+/// Source: Shi et al. 2022, Sec. 4.2 "Population initialization", Eq. (8)-(9),
+/// doi:10.3389/fbioe.2022.905983.
+/// Spec: shi2022.op.init
+/// Pre: >= 2 genes, every gene inside g (DomainError).
+/// Post: feasible => path starts with genes.front(), ends with genes.back(), every step an
+/// allowed move under policy (metrics::validate_path is valid); terminates (each insertion
+/// strictly lowers the Chebyshev distance of the pair).
+/// Golden: golden/shi2022-ga/shi2022.op.init.json
+[[nodiscard]] ChainRepair connect_chain(const grid::Grid& g, std::span<const grid::Cell> genes,
+                                        grid::CornerPolicy policy,
+                                        MidRounding rounding = MidRounding::floor,
+                                        InitReject reject = InitReject::blocked);
+
+/// One crossover point: position k in parent a and position j in parent b with a[k] == b[j].
+struct CrossPoint {
+  std::size_t k = 0;
+  std::size_t j = 0;
+  friend constexpr bool operator==(const CrossPoint&, const CrossPoint&) = default;
+};
+
+/// The common nodes of two paths (Figure 3: "find out all identical points on both paths"): for
+/// each interior position k = 1..n_a-2 of a, ascending, such that a[k] occurs among the interior
+/// positions 1..n_b-2 of b, the point (k, j) with j the FIRST such position in b.
+/// Source: Shi et al. 2022, Sec. 4.2 "Crossover", Figure 3, doi:10.3389/fbioe.2022.905983.
+/// Spec: shi2022.op.crossover
+/// Pre: none. Post: k ascending; a[k] == b[j]; 1 <= k <= n_a - 2, 1 <= j <= n_b - 2.
+/// Golden: golden/shi2022-ga/shi2022.op.crossover.json
+[[nodiscard]] std::vector<CrossPoint> crossover_points(std::span<const grid::Cell> a,
+                                                       std::span<const grid::Cell> b);
+
+/// The two children of a single-point crossover at (k, j): c1 = a[0..k] ++ b[j+1..],
+/// c2 = b[0..j] ++ a[k+1..].
+/// Source: Shi et al. 2022, Sec. 4.2 "Crossover", Figure 3, doi:10.3389/fbioe.2022.905983.
+/// Spec: shi2022.op.crossover
+/// Pre: k < n_a, j < n_b, a[k] == b[j] (DomainError).
+/// Post: |c1| + |c2| == |a| + |b|; if a and b are valid paths from S to T under a policy, so are
+/// c1 and c2 (every step of a child is a step of a parent).
+/// Golden: golden/shi2022-ga/shi2022.op.crossover.json
+struct Children {
+  std::vector<grid::Cell> first;
+  std::vector<grid::Cell> second;
+};
+[[nodiscard]] Children crossover_at(std::span<const grid::Cell> a, std::span<const grid::Cell> b,
+                                    CrossPoint point);
+
+/// The replacement candidates for gene k of a path (Figure 4, point mutation): the cells c of the
+/// 8-neighbourhood of path[k-1], in increasing cell index (grid.neighbour-order), with c !=
+/// path[k], c != path[k+1], grid::step_allowed(path[k-1], c) and grid::step_allowed(c, path[k+1]).
+/// Source: Shi et al. 2022, Sec. 4.2 "Mutation", Figure 4, doi:10.3389/fbioe.2022.905983.
+/// Spec: shi2022.op.mutation
+/// Pre: 1 <= k <= n - 2 (DomainError).
+/// Post: replacing path[k] by any candidate keeps every step of a valid path allowed.
+/// Golden: golden/shi2022-ga/shi2022.op.mutation.json
+[[nodiscard]] std::vector<grid::Cell> mutation_candidates(const grid::Grid& g,
+                                                          std::span<const grid::Cell> path,
+                                                          std::size_t k, grid::CornerPolicy policy);
+
+/// The deletion operator (Figure 6): scanning i = 1, 2, ... while i <= n - 2 of the current path,
+/// if path[i-1] -> path[i+1] is an allowed single move (grid::step_allowed), path[i] is deleted
+/// and the scan steps back to i - 1 (if i > 1; the deletion changed that node's successor);
+/// otherwise i advances. The result has no deletable node left.
+/// Source: Shi et al. 2022, Sec. 4.4.3 "Adding a deletion operator", Figure 6,
+/// doi:10.3389/fbioe.2022.905983.
+/// Spec: shi2022.op.deletion
+/// Pre: none (any sequence of cells; a node is removed only where the shortcut is a move).
+/// Post: a subsequence of the input with the same first and last node; if the input is a valid
+/// path, so is the output, and metrics::path_length(output) <= path_length(input) (each deletion
+/// replaces two steps by one: strictly shorter); idempotent.
+/// Golden: golden/shi2022-ga/shi2022.op.deletion.json
+[[nodiscard]] std::vector<grid::Cell> delete_redundant(const grid::Grid& g,
+                                                       std::span<const grid::Cell> path,
+                                                       grid::CornerPolicy policy);
+
+/// Loop removal (planner option `loops = cut`, spec shi2022.op.loops): scanning the path left to
+/// right, when a cell already kept at output position q occurs again, the output is cut back to
+/// position q (the closed loop between the two visits is dropped) and the scan goes on.
+/// Source: pathref (the paper is silent about the loops a crossover at a common node can create;
+/// Shi et al. 2022, Sec. 4.2, Figure 3, doi:10.3389/fbioe.2022.905983).
+/// Spec: shi2022.op.loops
+/// Pre: none. Post: no cell occurs twice; same first and last cell; a valid path stays valid and
+/// metrics::path_length never increases; a path without repeated cells is returned unchanged.
+/// Golden: golden/shi2022-ga/shi2022.op.loops.json
+[[nodiscard]] std::vector<grid::Cell> remove_loops(std::span<const grid::Cell> path);
+
+/// Elite retention (Sec. 4.4.3, "retains the top 50% of the individuals with a large fitness
+/// value"): the indices of the `count` largest fitness values, ordered by fitness descending,
+/// ties by the smaller index (a stable sort).
+/// Source: Shi et al. 2022, Sec. 4.4.3 steps 5 and 7, doi:10.3389/fbioe.2022.905983.
+/// Spec: shi2022.op.elite
+/// Pre: count <= fitness.size(); every fitness finite (DomainError).
+/// Post: result.size() == count; distinct indices; fitness[result[0]] is the maximum whenever
+/// count >= 1 (the best is never lost).
+/// Golden: golden/shi2022-ga/shi2022.op.elite.json
+[[nodiscard]] std::vector<std::size_t> elite_indices(std::span<const double> fitness,
+                                                     std::size_t count);
+
+/// The number kept by "the top fraction": ceil(fraction * n) evaluated in binary64, at least 1
+/// when n >= 1. Spec: shi2022.op.elite. Pre: 0 < fraction <= 1 (DomainError).
+[[nodiscard]] std::size_t elite_count(std::size_t n, double fraction);
+
+}  // namespace pathref::ga

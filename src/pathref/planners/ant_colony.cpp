@@ -1,0 +1,592 @@
+#include "pathref/planners/ant_colony.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <optional>
+#include <span>
+#include <string>
+#include <utility>
+
+#include "pathref/core/error.hpp"
+#include "pathref/equations/metrics.hpp"
+#include "pathref/equations/pseudo_random.hpp"
+#include "pathref/rng/draws.hpp"
+
+namespace pathref::ant_colony {
+
+// ---- option names ---------------------------------------------------------------------------
+
+Eta parse_eta(std::string_view name) {
+  if (name == "inverse_distance") return Eta::inverse_distance;
+  if (name == "goal_directed") return Eta::goal_directed;
+  throw UsageError("eta must be inverse_distance or goal_directed, not '" + std::string(name) + "'");
+}
+std::string_view to_string(Eta v) noexcept {
+  return v == Eta::inverse_distance ? "inverse_distance" : "goal_directed";
+}
+DeadEnd parse_dead_end(std::string_view name) {
+  if (name == "die") return DeadEnd::die;
+  if (name == "backtrack") return DeadEnd::backtrack;
+  throw UsageError("dead_end must be die or backtrack, not '" + std::string(name) + "'");
+}
+std::string_view to_string(DeadEnd v) noexcept { return v == DeadEnd::die ? "die" : "backtrack"; }
+DrawU parse_draw_u(std::string_view name) {
+  if (name == "lazy") return DrawU::lazy;
+  if (name == "always") return DrawU::always;
+  throw UsageError("draw_u must be lazy or always, not '" + std::string(name) + "'");
+}
+std::string_view to_string(DrawU v) noexcept { return v == DrawU::lazy ? "lazy" : "always"; }
+BonusEdges parse_bonus_edges(std::string_view name) {
+  if (name == "best_path") return BonusEdges::best_path;
+  if (name == "all_edges") return BonusEdges::all_edges;
+  throw UsageError("bonus_edges must be best_path or all_edges, not '" + std::string(name) + "'");
+}
+std::string_view to_string(BonusEdges v) noexcept {
+  return v == BonusEdges::best_path ? "best_path" : "all_edges";
+}
+RhoTiming parse_rho_timing(std::string_view name) {
+  if (name == "next") return RhoTiming::next;
+  if (name == "current") return RhoTiming::current;
+  throw UsageError("rho_timing must be next or current, not '" + std::string(name) + "'");
+}
+std::string_view to_string(RhoTiming v) noexcept {
+  return v == RhoTiming::next ? "next" : "current";
+}
+
+namespace {
+
+std::string_view name_of(aco::EdgeSense v) {
+  return v == aco::EdgeSense::directed ? "directed" : "undirected";
+}
+std::string_view name_of(aco::RhoReading v) {
+  switch (v) {
+    case aco::RhoReading::factor: return "factor";
+    case aco::RhoReading::condition: return "condition";
+    case aco::RhoReading::clamp: return "clamp";
+  }
+  return "factor";
+}
+std::string_view name_of(aco::SpreadReference v) {
+  return v == aco::SpreadReference::iteration_worst ? "iteration_worst" : "history_best";
+}
+std::string_view name_of(corner::OmegaForm v) {
+  return v == corner::OmegaForm::multiply ? "multiply" : "divide";
+}
+std::string_view name_of(corner::At90 v) { return v == corner::At90::two ? "two" : "one"; }
+
+constexpr std::int64_t max_ants = 1000000;
+constexpr std::int64_t max_iterations = 1000000;
+
+void validate(const Config& c) {
+  require(c.ants >= 1 && c.ants <= max_ants, "ant colony: ants must be in [1, 10^6]");
+  require(c.iterations >= 1 && c.iterations <= max_iterations,
+          "ant colony: iterations must be in [1, 10^6]");
+  require(std::isfinite(c.alpha) && c.alpha >= 0.0, "ant colony: alpha must be finite and >= 0");
+  require(std::isfinite(c.beta) && c.beta >= 0.0, "ant colony: beta must be finite and >= 0");
+  require(std::isfinite(c.Q) && c.Q > 0.0, "ant colony: Q must be finite and > 0");
+  require(std::isfinite(c.tau0) && c.tau0 > 0.0, "ant colony: tau0 must be finite and > 0");
+  require(c.rho > 0.0 && c.rho < 1.0, "ant colony: rho (rho_initial) must be in (0, 1)");
+  if (c.evaporation != Evaporation::constant)
+    require(c.rho_min >= 0.0 && c.rho_min < 1.0, "ant colony: rho_min must be in [0, 1)");
+  if (c.evaporation == Evaporation::shi_adaptive)
+    require(c.rho_t_origin == 0 || c.rho_t_origin == 1, "ant colony: rho_t_origin must be 0 or 1");
+  if (c.evaporation == Evaporation::han_stepped)
+    require(std::isfinite(c.a) && std::isfinite(c.b) && c.a >= 0.0 && c.a < c.b,
+            "ant colony: Eq. 7 constants need 0 <= a < b");
+  if (c.corner == Corner::han) {
+    require(std::isfinite(c.gamma) && c.gamma >= 0.0, "ant colony: gamma must be finite and >= 0");
+    require(c.omega_i > 0.0 && c.omega_i < 1.0, "ant colony: omega_i must be in (0, 1)");
+  }
+  if (c.selection == Selection::pseudo_random) {
+    require(c.q0_origin == 0 || c.q0_origin == 1, "ant colony: q0_origin must be 0 or 1");
+    // Eq. 5's domain (epsilon > 0, q0 <= 1) at its largest value, N_c = 0.
+    static_cast<void>(aco::adaptive_q0(c.epsilon, 0, c.iterations));
+  }
+  if (c.deposit == Deposit::han_elite) {
+    require(std::isfinite(c.h) && c.h >= 0.0, "ant colony: h must be finite and >= 0");
+    require(std::isfinite(c.tau_min) && c.tau_min > 0.0, "ant colony: tau_min must be finite and > 0");
+  }
+}
+
+/// Direction slot of the step (dx, dy) in grid.neighbour-order: 0..7. The reverse step is 7 - k.
+int direction(std::int64_t dx, std::int64_t dy) {
+  const auto k = static_cast<int>((dy + 1) * 3 + (dx + 1));
+  return k > 4 ? k - 1 : k;
+}
+
+struct Arc {
+  std::int64_t to;  ///< target cell index
+  int dir;          ///< direction slot
+};
+
+/// The allowed moves of every free cell, from grid::neighbours (canonical order).
+std::vector<std::vector<Arc>> adjacency(const grid::Grid& g, grid::CornerPolicy policy) {
+  std::vector<std::vector<Arc>> adj(static_cast<std::size_t>(g.cell_count()));
+  for (std::int64_t i = 0; i < g.cell_count(); ++i) {
+    const grid::Cell c = g.cell(i);
+    if (!g.free(c)) continue;
+    for (const grid::Move& m : grid::neighbours(g, c, policy))
+      adj[static_cast<std::size_t>(i)].push_back(
+          Arc{g.index(m.to), direction(m.to.x - c.x, m.to.y - c.y)});
+  }
+  return adj;
+}
+
+Json number_or_null(double v) { return std::isfinite(v) ? Json(v) : Json(nullptr); }
+
+}  // namespace
+
+// ---- presets and parameters -----------------------------------------------------------------
+
+Config shi_aco() { return Config{}; }
+
+Config shi_iaco() {
+  Config c;
+  c.eta = Eta::goal_directed;
+  c.evaporation = Evaporation::shi_adaptive;
+  c.rho = 0.9;
+  c.rho_min = 0.1;
+  return c;
+}
+
+Config shi_iaco_nomin() {
+  Config c = shi_iaco();
+  c.rho_min = 0.0;
+  return c;
+}
+
+Config han_iaco() {
+  Config c;
+  c.eta = Eta::inverse_distance;
+  c.selection = Selection::pseudo_random;
+  c.corner = Corner::han;
+  c.evaporation = Evaporation::han_stepped;
+  c.deposit = Deposit::han_elite;
+  c.ants = 50;
+  c.iterations = 50;
+  c.alpha = 4.0;
+  c.beta = 8.0;
+  c.rho = 0.7;
+  c.rho_min = 0.1;
+  c.Q = 1.0;
+  c.tau0 = 1.0;
+  c.a = 1.0;
+  c.b = 5.0;
+  c.gamma = 1.0;
+  c.omega_i = 0.5;
+  c.epsilon = 1.0;
+  c.h = 1.0;
+  c.tau_min = 0.01;
+  return c;
+}
+
+Json to_params(const Config& c) {
+  Json p = Json::object();
+  p["ants"] = c.ants;
+  p["iterations"] = c.iterations;
+  p["alpha"] = c.alpha;
+  p["beta"] = c.beta;
+  p["Q"] = c.Q;
+  p["tau0"] = c.tau0;
+  p["eta"] = std::string(to_string(c.eta));
+  p["edge_sense"] = std::string(name_of(c.edge_sense));
+  p["dead_end"] = std::string(to_string(c.dead_end));
+  switch (c.evaporation) {
+    case Evaporation::constant:
+      p["rho"] = c.rho;
+      break;
+    case Evaporation::shi_adaptive:
+      p["rho_initial"] = c.rho;
+      p["rho_min"] = c.rho_min;
+      p["rho_reading"] = std::string(name_of(c.rho_reading));
+      p["rho_t_origin"] = c.rho_t_origin;
+      break;
+    case Evaporation::han_stepped:
+      p["rho"] = c.rho;
+      p["rho_min"] = c.rho_min;
+      p["a"] = c.a;
+      p["b"] = c.b;
+      p["spread_reference"] = std::string(name_of(c.spread_reference));
+      p["rho_timing"] = std::string(to_string(c.rho_timing));
+      break;
+  }
+  if (c.corner == Corner::han) {
+    p["gamma"] = c.gamma;
+    p["omega_i"] = c.omega_i;
+    p["omega_form"] = std::string(name_of(c.omega_form));
+    p["at90"] = std::string(name_of(c.at90));
+  }
+  if (c.selection == Selection::pseudo_random) {
+    p["epsilon"] = c.epsilon;
+    p["q0_origin"] = c.q0_origin;
+    p["draw_u"] = std::string(to_string(c.draw_u));
+  }
+  if (c.deposit == Deposit::han_elite) {
+    p["h"] = c.h;
+    p["tau_min"] = c.tau_min;
+    p["bonus_edges"] = std::string(to_string(c.bonus_edges));
+  }
+  return p;
+}
+
+Config from_params(const Config& base, const Json& params) {
+  Config c = base;
+  const Json allowed = to_params(base);
+  for (const auto& [k, v] : params.items()) {
+    if (!allowed.contains(k)) throw UsageError("unknown ant-colony parameter '" + k + "'");
+    const bool want_int = allowed.at(k).is_number_integer();
+    const bool want_num = allowed.at(k).is_number();
+    const bool want_str = allowed.at(k).is_string();
+    if ((want_int && !v.is_number_integer()) || (want_num && !v.is_number()) ||
+        (want_str && !v.is_string()))
+      throw UsageError("parameter '" + k + "' must be of the same type as its default " +
+                       allowed.at(k).dump());
+    const auto num = [&] {
+      const double d = v.get<double>();
+      require(std::isfinite(d), "parameter '" + k + "' must be finite");
+      return d;
+    };
+    const auto integer = [&] { return v.get<std::int64_t>(); };
+    const auto str = [&] { return v.get<std::string>(); };
+    if (k == "ants") c.ants = integer();
+    else if (k == "iterations") c.iterations = integer();
+    else if (k == "alpha") c.alpha = num();
+    else if (k == "beta") c.beta = num();
+    else if (k == "Q") c.Q = num();
+    else if (k == "tau0") c.tau0 = num();
+    else if (k == "eta") c.eta = parse_eta(str());
+    else if (k == "edge_sense") c.edge_sense = aco::parse_edge_sense(str());
+    else if (k == "dead_end") c.dead_end = parse_dead_end(str());
+    else if (k == "rho" || k == "rho_initial") c.rho = num();
+    else if (k == "rho_min") c.rho_min = num();
+    else if (k == "rho_reading") c.rho_reading = aco::parse_rho_reading(str());
+    else if (k == "rho_t_origin") {
+      const std::int64_t o = integer();
+      require(o == 0 || o == 1, "rho_t_origin must be 0 or 1");
+      c.rho_t_origin = static_cast<int>(o);
+    } else if (k == "a") c.a = num();
+    else if (k == "b") c.b = num();
+    else if (k == "spread_reference") c.spread_reference = aco::parse_spread_reference(str());
+    else if (k == "rho_timing") c.rho_timing = parse_rho_timing(str());
+    else if (k == "gamma") c.gamma = num();
+    else if (k == "omega_i") c.omega_i = num();
+    else if (k == "omega_form") c.omega_form = corner::parse_omega_form(str());
+    else if (k == "at90") c.at90 = corner::parse_at90(str());
+    else if (k == "epsilon") c.epsilon = num();
+    else if (k == "q0_origin") {
+      const std::int64_t o = integer();
+      require(o == 0 || o == 1, "q0_origin must be 0 or 1");
+      c.q0_origin = static_cast<int>(o);
+    } else if (k == "draw_u") c.draw_u = parse_draw_u(str());
+    else if (k == "h") c.h = num();
+    else if (k == "tau_min") c.tau_min = num();
+    else if (k == "bonus_edges") c.bonus_edges = parse_bonus_edges(str());
+    else throw UsageError("unknown ant-colony parameter '" + k + "'");
+  }
+  validate(c);
+  return c;
+}
+
+// ---- the run --------------------------------------------------------------------------------
+
+Run run(const planners::Request& req, const Config& cfg, rng::Stream& stream) {
+  if (req.grid == nullptr) throw UsageError("plan request without a grid");
+  const grid::Grid& g = *req.grid;
+  require(g.in_bounds(req.start), "ant colony: start cell outside the grid");
+  require(g.in_bounds(req.goal), "ant colony: goal cell outside the grid");
+  require(g.free(req.start), "ant colony: start cell is blocked");
+  require(g.free(req.goal), "ant colony: goal cell is blocked");
+  validate(cfg);
+
+  Run out;
+  planners::Result& res = out.result;
+  res.params_used = to_params(cfg);
+  const std::uint64_t draws_before = stream.doubles_drawn();
+
+  if (req.start == req.goal) {  // spec: the one-cell path, no iteration, no draw
+    res.found = true;
+    res.path = {req.start};
+    res.length = 0.0;
+    res.extra = Json{{"best_iteration", nullptr}, {"best_ant", nullptr}, {"draws", 0},
+                     {"distinct_paths", 0}};
+    return out;
+  }
+
+  const std::int64_t cells = g.cell_count();
+  const auto ucells = static_cast<std::size_t>(cells);
+  const std::vector<std::vector<Arc>> adj = adjacency(g, req.policy);
+  const std::int64_t start = g.index(req.start);
+  const std::int64_t goal = g.index(req.goal);
+  const grid::Cell goal_cell = req.goal;
+  const auto m = static_cast<std::size_t>(cfg.ants);
+  const std::int64_t N = cfg.iterations;
+
+  // Pheromone on every ordered pair (cell, direction slot): tau[8 i + k].
+  std::vector<double> tau(ucells * 8U, cfg.tau0);
+
+  std::vector<std::uint8_t> tabu(ucells, 0);
+  std::vector<std::int64_t> touched;
+  std::vector<std::vector<std::int64_t>> paths(m);  // cell indices per ant
+  std::vector<bool> alive(m, false);
+  std::vector<double> lengths(m, 0.0);
+  std::vector<grid::Cell> cell_path;
+
+  // per-move scratch
+  std::vector<double> w_tau;
+  std::vector<double> w_eta;
+  std::vector<grid::Cell> cand_cells;
+  std::vector<std::int64_t> cand_index;
+
+  double best_len = std::numeric_limits<double>::infinity();
+  std::vector<std::int64_t> best_path;
+  std::int64_t best_iteration = 0;
+  std::int64_t best_ant = 0;
+
+  double rho_state = cfg.rho;  // shi_adaptive: rho of the current iteration; han: rho(t-1)
+  Json rho_used = Json::array();
+  Json q0_used = Json::array();
+  Json dead_per_iteration = Json::array();
+  Json it_best = Json::array();
+  Json it_worst = Json::array();
+  std::map<std::vector<std::int64_t>, std::size_t> seen;
+
+  const auto to_cells = [&](const std::vector<std::int64_t>& idx) {
+    std::vector<grid::Cell> v;
+    v.reserve(idx.size());
+    for (const std::int64_t i : idx) v.push_back(g.cell(i));
+    return v;
+  };
+
+  for (std::int64_t t = 1; t <= N; ++t) {
+    double q0 = 0.0;
+    if (cfg.selection == Selection::pseudo_random) {
+      const std::int64_t Nc = cfg.q0_origin == 1 ? t : t - 1;
+      q0 = aco::adaptive_q0(cfg.epsilon, Nc, N);
+      q0_used.push_back(q0);
+    }
+
+    // ---- tour construction, ants in ascending order ----
+    for (std::size_t a = 0; a < m; ++a) {
+      std::vector<std::int64_t>& path = paths[a];
+      path.clear();
+      for (const std::int64_t i : touched) tabu[static_cast<std::size_t>(i)] = 0;
+      touched.clear();
+      path.push_back(start);
+      tabu[static_cast<std::size_t>(start)] = 1;
+      touched.push_back(start);
+      bool dead = false;
+      while (path.back() != goal) {
+        const std::int64_t cur = path.back();
+        const grid::Cell cur_cell = g.cell(cur);
+        const auto& arcs = adj[static_cast<std::size_t>(cur)];
+        w_tau.clear();
+        w_eta.clear();
+        cand_cells.clear();
+        cand_index.clear();
+        for (const Arc& arc : arcs) {
+          if (tabu[static_cast<std::size_t>(arc.to)] != 0) continue;
+          const grid::Cell to = g.cell(arc.to);
+          cand_index.push_back(arc.to);
+          cand_cells.push_back(to);
+          w_tau.push_back(tau[static_cast<std::size_t>(cur) * 8U + static_cast<std::size_t>(arc.dir)]);
+          w_eta.push_back(cfg.eta == Eta::inverse_distance
+                              ? aco::eta_inverse_distance(cur_cell, to)
+                              : aco::eta_goal_directed(cur_cell, to, goal_cell));
+        }
+        if (cand_index.empty()) {  // dead end
+          if (cfg.dead_end == DeadEnd::die) {
+            dead = true;
+            break;
+          }
+          path.pop_back();  // backtrack; the dead end stays tabu
+          if (path.empty()) {
+            dead = true;
+            break;
+          }
+          continue;
+        }
+        std::vector<double> weights;
+        if (cfg.corner == Corner::han) {
+          std::optional<grid::Cell> prev;
+          if (path.size() >= 2) prev = g.cell(path[path.size() - 2]);
+          const std::vector<double> omega = corner::corner_factors(
+              prev, cur_cell, cand_cells, cfg.omega_i, cfg.omega_form, cfg.at90);
+          weights = aco::transition_weights(w_tau, w_eta, cfg.alpha, cfg.beta,
+                                            aco::CornerFactor{omega, cfg.gamma});
+        } else {
+          weights = aco::transition_weights(w_tau, w_eta, cfg.alpha, cfg.beta);
+        }
+        std::size_t k = 0;
+        if (cfg.selection == Selection::proportional) {
+          const double u = stream.next_double();
+          k = rng::roulette(weights, u);
+        } else {
+          const double q = stream.next_double();
+          double u = 0.0;
+          if (cfg.draw_u == DrawU::always || q > q0) u = stream.next_double();
+          k = aco::pseudo_random_choice(weights, q, q0, u).index;
+        }
+        const std::int64_t next = cand_index[k];
+        path.push_back(next);
+        tabu[static_cast<std::size_t>(next)] = 1;
+        touched.push_back(next);
+      }
+      alive[a] = !dead;
+      if (!dead) {
+        cell_path = to_cells(path);
+        lengths[a] = metrics::path_length(cell_path);
+      }
+    }
+
+    // ---- iteration statistics ----
+    std::int64_t dead_count = 0;
+    std::size_t survivors = 0;
+    double sum = 0.0;
+    double L_n = std::numeric_limits<double>::infinity();
+    double L_A = -std::numeric_limits<double>::infinity();
+    std::size_t n_ant = 0;
+    for (std::size_t a = 0; a < m; ++a) {
+      if (!alive[a]) {
+        ++dead_count;
+        continue;
+      }
+      ++survivors;
+      sum += lengths[a];
+      if (lengths[a] < L_n) {
+        L_n = lengths[a];
+        n_ant = a;
+      }
+      if (lengths[a] > L_A) L_A = lengths[a];
+      auto [pos, inserted] = seen.try_emplace(paths[a], out.distinct_paths.size());
+      if (inserted) {
+        AntPath ap;
+        ap.path = to_cells(paths[a]);
+        ap.length = lengths[a];
+        ap.first_iteration = t;
+        ap.first_ant = static_cast<std::int64_t>(a);
+        out.distinct_paths.push_back(std::move(ap));
+      }
+      AntPath& ap = out.distinct_paths[pos->second];
+      ap.last_iteration = t;
+      ++ap.count;
+    }
+    dead_per_iteration.push_back(dead_count);
+    it_best.push_back(number_or_null(L_n));
+    it_worst.push_back(number_or_null(L_A));
+    res.mean_per_iteration.push_back(survivors > 0 ? sum / static_cast<double>(survivors)
+                                                   : std::numeric_limits<double>::quiet_NaN());
+    const double L_a = std::isfinite(best_len) ? best_len : L_n;  // best before this iteration
+
+    // ---- rho of this iteration's update ----
+    double rho = cfg.rho;
+    switch (cfg.evaporation) {
+      case Evaporation::constant:
+        break;
+      case Evaporation::shi_adaptive:
+        rho = rho_state;
+        break;
+      case Evaporation::han_stepped: {
+        double rho_t = rho_state;
+        if (survivors > 0) {
+          const double L_ref = cfg.spread_reference == aco::SpreadReference::iteration_worst ? L_A : L_a;
+          rho_t = aco::stepped_rho(rho_state, L_ref, L_n, cfg.a, cfg.b, cfg.rho_min,
+                                   cfg.spread_reference);
+        }
+        rho = cfg.rho_timing == RhoTiming::next ? rho_state : rho_t;
+        rho_state = rho_t;
+        break;
+      }
+    }
+    rho_used.push_back(rho);
+
+    // ---- deposits: (slot, value) in ant order, then grouped per slot (stable) ----
+    std::vector<std::pair<std::size_t, double>> deposits;
+    for (std::size_t a = 0; a < m; ++a) {
+      if (!alive[a]) continue;
+      const double d = aco::ant_cycle_deposit(cfg.Q, lengths[a]);
+      const auto& p = paths[a];
+      for (std::size_t s = 1; s < p.size(); ++s) {
+        const grid::Cell from = g.cell(p[s - 1]);
+        const grid::Cell to = g.cell(p[s]);
+        const int k = direction(to.x - from.x, to.y - from.y);
+        deposits.emplace_back(static_cast<std::size_t>(p[s - 1]) * 8U + static_cast<std::size_t>(k), d);
+        if (cfg.edge_sense == aco::EdgeSense::undirected)
+          deposits.emplace_back(static_cast<std::size_t>(p[s]) * 8U + static_cast<std::size_t>(7 - k), d);
+      }
+    }
+    std::stable_sort(deposits.begin(), deposits.end(),
+                     [](const auto& x, const auto& y) { return x.first < y.first; });
+    std::vector<double> delta(tau.size(), 0.0);
+    std::vector<double> group;
+    for (std::size_t i = 0; i < deposits.size();) {
+      std::size_t j = i;
+      group.clear();
+      while (j < deposits.size() && deposits[j].first == deposits[i].first) group.push_back(deposits[j++].second);
+      delta[deposits[i].first] = aco::total_deposit(group);
+      i = j;
+    }
+
+    if (cfg.deposit == Deposit::ant_cycle) {
+      for (std::size_t e = 0; e < tau.size(); ++e) tau[e] = aco::pheromone_update(tau[e], rho, delta[e]);
+    } else {
+      std::vector<std::uint8_t> on_best(tau.size(), 0);
+      double bonus = 0.0;
+      if (survivors > 0) {
+        bonus = aco::elite_bonus(cfg.h, L_a, L_n);
+        if (cfg.bonus_edges == BonusEdges::all_edges) {
+          std::fill(on_best.begin(), on_best.end(), std::uint8_t{1});
+        } else {
+          const auto& p = paths[n_ant];
+          for (std::size_t s = 1; s < p.size(); ++s) {
+            const grid::Cell from = g.cell(p[s - 1]);
+            const grid::Cell to = g.cell(p[s]);
+            const int k = direction(to.x - from.x, to.y - from.y);
+            on_best[static_cast<std::size_t>(p[s - 1]) * 8U + static_cast<std::size_t>(k)] = 1;
+            if (cfg.edge_sense == aco::EdgeSense::undirected)
+              on_best[static_cast<std::size_t>(p[s]) * 8U + static_cast<std::size_t>(7 - k)] = 1;
+          }
+        }
+      }
+      for (std::size_t e = 0; e < tau.size(); ++e)
+        tau[e] = aco::pheromone_update_elite(tau[e], rho, delta[e], on_best[e] != 0 ? bonus : 0.0,
+                                             cfg.tau_min);
+    }
+
+    // ---- best so far (strict improvement: the earliest best is kept) ----
+    if (survivors > 0 && L_n < best_len) {
+      best_len = L_n;
+      best_path = paths[n_ant];
+      best_iteration = t;
+      best_ant = static_cast<std::int64_t>(n_ant);
+    }
+    res.best_per_iteration.push_back(best_len);
+
+    // ---- Shi Eq. 13: rho of the next iteration ----
+    if (cfg.evaporation == Evaporation::shi_adaptive && t < N)
+      rho_state = aco::adaptive_rho(rho_state, t - 1 + cfg.rho_t_origin, N, cfg.rho_min,
+                                    cfg.rho_reading);
+  }
+
+  res.iterations = N;
+  res.found = !best_path.empty();
+  if (res.found) {
+    res.path = to_cells(best_path);
+    res.length = best_len;
+  }
+  Json extra = Json::object();
+  extra["best_iteration"] = res.found ? Json(best_iteration) : Json(nullptr);
+  extra["best_ant"] = res.found ? Json(best_ant) : Json(nullptr);
+  extra["dead_ants_per_iteration"] = std::move(dead_per_iteration);
+  extra["iteration_best"] = std::move(it_best);
+  extra["iteration_worst"] = std::move(it_worst);
+  extra["rho_per_iteration"] = std::move(rho_used);
+  if (cfg.selection == Selection::pseudo_random) extra["q0_per_iteration"] = std::move(q0_used);
+  extra["distinct_paths"] = out.distinct_paths.size();
+  extra["draws"] = stream.doubles_drawn() - draws_before;
+  res.extra = std::move(extra);
+  return out;
+}
+
+}  // namespace pathref::ant_colony

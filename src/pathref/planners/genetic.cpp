@@ -1,0 +1,474 @@
+#include "pathref/planners/genetic.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <utility>
+
+#include "pathref/core/error.hpp"
+#include "pathref/equations/metrics.hpp"
+#include "pathref/rng/draws.hpp"
+
+namespace pathref::genetic {
+
+namespace {
+
+[[noreturn]] void unknown(const char* what, std::string_view name, const char* expected) {
+  throw UsageError(std::string("unknown ") + what + " '" + std::string(name) + "' (expected " +
+                   expected + ")");
+}
+
+std::string_view name_of(ga::SmoothnessReading v) {
+  switch (v) {
+    case ga::SmoothnessReading::per_node: return "per_node";
+    case ga::SmoothnessReading::per_turn: return "per_turn";
+    case ga::SmoothnessReading::angle_times_penalty: return "angle_times_penalty";
+    case ga::SmoothnessReading::inverse_total: return "inverse_total";
+  }
+  return "?";
+}
+std::string_view name_of(ga::SafetyCount v) { return v == ga::SafetyCount::count ? "count" : "indicator"; }
+std::string_view name_of(ga::SafeNode v) { return v == ga::SafeNode::one ? "one" : "skip"; }
+std::string_view name_of(ga::SafetyNodes v) {
+  switch (v) {
+    case ga::SafetyNodes::all_but_goal: return "all_but_goal";
+    case ga::SafetyNodes::all: return "all";
+    case ga::SafetyNodes::interior: return "interior";
+  }
+  return "?";
+}
+std::string_view name_of(metrics::OutsideCells v) {
+  return v == metrics::OutsideCells::free ? "free" : "blocked";
+}
+std::string_view name_of(ga::MidRounding v) {
+  switch (v) {
+    case ga::MidRounding::floor: return "floor";
+    case ga::MidRounding::ceil: return "ceil";
+    case ga::MidRounding::half_even: return "half_even";
+  }
+  return "?";
+}
+std::string_view name_of(ga::PmAtZero v) {
+  return v == ga::PmAtZero::binary64 ? "binary64" : "exact_zero";
+}
+
+const grid::Grid& grid_of(const planners::Request& req) {
+  if (req.grid == nullptr) throw UsageError("plan request without a grid");
+  return *req.grid;
+}
+
+/// True iff candidate x is strictly better than incumbent y under result_by.
+bool better(const Individual& x, const Individual& y, ResultBy by) {
+  return by == ResultBy::fitness ? x.fitness > y.fitness : x.length < y.length;
+}
+
+}  // namespace
+
+Fitness parse_fitness(std::string_view n) {
+  if (n == "inverse_length") return Fitness::inverse_length;
+  if (n == "weighted") return Fitness::weighted;
+  unknown("fitness", n, "inverse_length or weighted");
+}
+std::string_view to_string(Fitness v) noexcept {
+  return v == Fitness::inverse_length ? "inverse_length" : "weighted";
+}
+Probabilities parse_probabilities(std::string_view n) {
+  if (n == "fixed") return Probabilities::fixed;
+  if (n == "adaptive") return Probabilities::adaptive;
+  unknown("ga_probabilities", n, "adaptive or fixed");
+}
+std::string_view to_string(Probabilities v) noexcept {
+  return v == Probabilities::fixed ? "fixed" : "adaptive";
+}
+Scale parse_scale(std::string_view n) {
+  if (n == "printed") return Scale::printed;
+  if (n == "scaled") return Scale::scaled;
+  unknown("pc_reading/pm_reading", n, "printed or scaled");
+}
+std::string_view to_string(Scale v) noexcept { return v == Scale::printed ? "printed" : "scaled"; }
+CrossoverKeep parse_crossover_keep(std::string_view n) {
+  if (n == "children") return CrossoverKeep::children;
+  if (n == "best_two") return CrossoverKeep::best_two;
+  unknown("crossover_keep", n, "children or best_two");
+}
+std::string_view to_string(CrossoverKeep v) noexcept {
+  return v == CrossoverKeep::children ? "children" : "best_two";
+}
+Loops parse_loops(std::string_view n) {
+  if (n == "keep") return Loops::keep;
+  if (n == "cut") return Loops::cut;
+  unknown("loops", n, "keep or cut");
+}
+std::string_view to_string(Loops v) noexcept { return v == Loops::keep ? "keep" : "cut"; }
+ResultBy parse_result_by(std::string_view n) {
+  if (n == "fitness") return ResultBy::fitness;
+  if (n == "length") return ResultBy::length;
+  unknown("result_by", n, "fitness or length");
+}
+std::string_view to_string(ResultBy v) noexcept { return v == ResultBy::fitness ? "fitness" : "length"; }
+std::string_view to_string(Origin v) noexcept {
+  switch (v) {
+    case Origin::init: return "init";
+    case Origin::aco: return "aco";
+    case Origin::crossover: return "crossover";
+    case Origin::mutation: return "mutation";
+  }
+  return "?";
+}
+
+Config shi_ga() { return Config{}; }
+
+Config shi_iga() {
+  Config c;
+  c.fitness = Fitness::weighted;
+  c.probabilities = Probabilities::adaptive;
+  return c;
+}
+
+Config shi_iga_nomax() {
+  Config c = shi_iga();
+  c.pm_max = 1.0;
+  return c;
+}
+
+Json to_params(const Config& c) {
+  return Json{
+      {"population", c.population},
+      {"generations", c.generations},
+      {"fitness", std::string(to_string(c.fitness))},
+      {"a", c.weights.a},
+      {"b", c.weights.b},
+      {"c", c.weights.c},
+      {"smoothness", std::string(name_of(c.smoothness))},
+      {"penalties", Json::array({c.penalties.up_to_45, c.penalties.up_to_90, c.penalties.above_90})},
+      {"safety_count", std::string(name_of(c.safety.count))},
+      {"safe_node", std::string(name_of(c.safety.safe))},
+      {"safety_nodes", std::string(name_of(c.safety.nodes))},
+      {"outside", std::string(name_of(c.safety.outside))},
+      {"ga_probabilities", std::string(to_string(c.probabilities))},
+      {"pc", c.pc},
+      {"pm", c.pm},
+      {"pm_max", c.pm_max},
+      {"pc_reading", std::string(to_string(c.pc_reading))},
+      {"pm_reading", std::string(to_string(c.pm_reading))},
+      {"pm_at_zero", std::string(name_of(c.pm_at_zero))},
+      {"ga_i_origin", c.ga_i_origin},
+      {"duplicate_gene", "drop"},
+      {"mid_rounding", std::string(name_of(c.mid_rounding))},
+      {"init_reject", std::string(ga::to_string(c.init_reject))},
+      {"init_attempts", c.init_attempts},
+      {"crossover_keep", std::string(to_string(c.crossover_keep))},
+      {"loops", std::string(to_string(c.loops))},
+      {"result_by", std::string(to_string(c.result_by))},
+  };
+}
+
+void validate(const Config& c) {
+  require(c.population >= 2 && c.population <= 1000000, "population must lie in [2, 10^6]");
+  require(c.generations >= 1 && c.generations <= 1000000, "generations must lie in [1, 10^6]");
+  for (const double w : {c.weights.a, c.weights.b, c.weights.c})
+    require(std::isfinite(w) && w >= 0.0, "the weights a, b, c must be finite and >= 0");
+  for (const double p : {c.penalties.up_to_45, c.penalties.up_to_90, c.penalties.above_90})
+    require(std::isfinite(p) && p > 0.0, "penalties must be finite and > 0");
+  require(std::isfinite(c.pc) && c.pc >= 0.0 && c.pc <= 1.0, "pc must lie in [0, 1]");
+  require(std::isfinite(c.pm) && c.pm >= 0.0 && c.pm <= 1.0, "pm must lie in [0, 1]");
+  require(std::isfinite(c.pm_max) && c.pm_max > 0.0 && c.pm_max <= 1.0, "pm_max must lie in (0, 1]");
+  if (c.probabilities == Probabilities::adaptive) {
+    if (c.pc_reading == Scale::scaled) require(c.pc > 0.0, "pc_reading=scaled needs pc > 0");
+    if (c.pm_reading == Scale::scaled) require(c.pm > 0.0, "pm_reading=scaled needs pm > 0");
+  }
+  require(c.ga_i_origin == 0 || c.ga_i_origin == 1, "ga_i_origin must be 0 or 1");
+  require(c.init_attempts >= 1 && c.init_attempts <= 100000000, "init_attempts must lie in [1, 10^8]");
+  require(std::isfinite(c.elite_fraction) && c.elite_fraction > 0.0 && c.elite_fraction <= 1.0,
+          "elite_fraction must lie in (0, 1]");
+}
+
+Config from_params(const Config& base, const Json& p) {
+  Config c = base;
+  auto str = [&](const char* k) { return p.at(k).get<std::string>(); };
+  auto num = [&](const char* k) { return p.at(k).get<double>(); };
+  auto integer = [&](const char* k) { return p.at(k).get<std::int64_t>(); };
+  if (p.contains("population")) c.population = integer("population");
+  if (p.contains("generations")) c.generations = integer("generations");
+  if (p.contains("fitness")) c.fitness = parse_fitness(str("fitness"));
+  if (p.contains("a")) c.weights.a = num("a");
+  if (p.contains("b")) c.weights.b = num("b");
+  if (p.contains("c")) c.weights.c = num("c");
+  if (p.contains("smoothness")) c.smoothness = ga::parse_smoothness_reading(str("smoothness"));
+  if (p.contains("penalties")) {
+    const Json& v = p.at("penalties");
+    if (!v.is_array() || v.size() != 3 || !v[0].is_number() || !v[1].is_number() ||
+        !v[2].is_number())
+      throw UsageError("penalties must be an array of three numbers [P45, P90, P180]");
+    c.penalties = ga::TurnPenalties{v[0].get<double>(), v[1].get<double>(), v[2].get<double>()};
+  }
+  if (p.contains("safety_count")) c.safety.count = ga::parse_safety_count(str("safety_count"));
+  if (p.contains("safe_node")) c.safety.safe = ga::parse_safe_node(str("safe_node"));
+  if (p.contains("safety_nodes")) c.safety.nodes = ga::parse_safety_nodes(str("safety_nodes"));
+  if (p.contains("outside")) c.safety.outside = metrics::parse_outside_cells(str("outside"));
+  if (p.contains("ga_probabilities")) c.probabilities = parse_probabilities(str("ga_probabilities"));
+  if (p.contains("pc")) c.pc = num("pc");
+  if (p.contains("pm")) c.pm = num("pm");
+  if (p.contains("pm_max")) c.pm_max = num("pm_max");
+  if (p.contains("pc_reading")) c.pc_reading = parse_scale(str("pc_reading"));
+  if (p.contains("pm_reading")) c.pm_reading = parse_scale(str("pm_reading"));
+  if (p.contains("pm_at_zero")) c.pm_at_zero = ga::parse_pm_at_zero(str("pm_at_zero"));
+  if (p.contains("ga_i_origin")) {
+    const std::int64_t o = integer("ga_i_origin");
+    require(o == 0 || o == 1, "ga_i_origin must be 0 or 1");
+    c.ga_i_origin = static_cast<int>(o);
+  }
+  if (p.contains("duplicate_gene") && str("duplicate_gene") != "drop")
+    throw UsageError("unknown duplicate_gene '" + str("duplicate_gene") + "' (expected drop)");
+  if (p.contains("mid_rounding")) c.mid_rounding = ga::parse_mid_rounding(str("mid_rounding"));
+  if (p.contains("init_reject")) c.init_reject = ga::parse_init_reject(str("init_reject"));
+  if (p.contains("init_attempts")) c.init_attempts = integer("init_attempts");
+  if (p.contains("crossover_keep")) c.crossover_keep = parse_crossover_keep(str("crossover_keep"));
+  if (p.contains("loops")) c.loops = parse_loops(str("loops"));
+  if (p.contains("result_by")) c.result_by = parse_result_by(str("result_by"));
+  if (p.contains("elite_fraction")) c.elite_fraction = num("elite_fraction");
+  validate(c);
+  return c;
+}
+
+double fitness_of(const grid::Grid& g, std::span<const grid::Cell> path, const Config& c) {
+  require(path.size() >= 2, "a path of one node has no fitness");
+  const double f1 = ga::inverse_length(metrics::path_length(path));
+  if (c.fitness == Fitness::inverse_length) return f1;
+  const double f2 = ga::smoothness_factor(path, c.smoothness, c.penalties);
+  const double f3 = ga::safety_factor(g, path, c.safety);
+  return ga::weighted_fitness(f1, f2, f3, c.weights);
+}
+
+Individual make_individual(const grid::Grid& g, std::vector<grid::Cell> path, const Config& c,
+                           Origin origin, std::int64_t born) {
+  Individual ind;
+  ind.length = metrics::path_length(path);
+  ind.fitness = fitness_of(g, path, c);
+  ind.path = std::move(path);
+  ind.origin = origin;
+  ind.born = born;
+  return ind;
+}
+
+InitOutcome initial_paths(const grid::Grid& g, grid::Cell start, grid::Cell goal,
+                          grid::CornerPolicy policy, const Config& c, rng::Stream& stream,
+                          std::int64_t count) {
+  require(g.in_bounds(start) && g.in_bounds(goal), "GA: start or goal outside the grid");
+  require(g.free(start) && g.free(goal), "GA: start or goal blocked");
+  require(!(start == goal), "GA: start == goal has no initial chain");
+  InitOutcome out;
+  // The rows strictly between start and goal, from the start's side (spec "Initialisation").
+  std::vector<std::int64_t> rows;
+  const std::int64_t step = goal.y > start.y ? 1 : -1;
+  if (goal.y != start.y)
+    for (std::int64_t y = start.y + step; y != goal.y; y += step) rows.push_back(y);
+  std::vector<std::vector<std::int64_t>> free_x(rows.size());
+  for (std::size_t r = 0; r < rows.size(); ++r) {
+    for (std::int64_t x = 0; x < g.width(); ++x)
+      if (g.free(grid::Cell{x, rows[r]})) free_x[r].push_back(x);
+    if (free_x[r].empty()) {
+      out.failure = "row_blocked";
+      return out;
+    }
+  }
+  std::vector<grid::Cell> genes;
+  for (std::int64_t a = 0; a < count; ++a) {
+    bool done = false;
+    for (std::int64_t attempt = 0; attempt < c.init_attempts && !done; ++attempt) {
+      genes.clear();
+      genes.push_back(start);
+      for (std::size_t r = 0; r < rows.size(); ++r) {
+        const std::size_t k = rng::uniform_index(stream.next_double(), free_x[r].size());
+        genes.push_back(grid::Cell{free_x[r][k], rows[r]});
+      }
+      genes.push_back(goal);
+      ++out.chains;
+      ga::ChainRepair rep = ga::connect_chain(g, genes, policy, c.mid_rounding, c.init_reject);
+      if (rep.feasible) {
+        out.paths.push_back(std::move(rep.path));
+        done = true;
+      }
+    }
+    if (!done) {
+      out.failure = "init_attempts_exhausted";
+      return out;
+    }
+  }
+  out.ok = true;
+  return out;
+}
+
+Evolution evolve(const grid::Grid& g, grid::CornerPolicy policy, const Config& c,
+                 rng::Stream& stream, std::vector<Individual> pop) {
+  require(!pop.empty(), "GA: empty population");
+  Evolution ev;
+  ev.best = pop.front();
+  for (const Individual& ind : pop)
+    if (better(ind, ev.best, c.result_by)) ev.best = ind;
+  const std::size_t S = pop.size();
+  std::vector<double> fit(S);
+  std::vector<Individual> pool;
+  pool.reserve(S);
+  for (std::int64_t i = 1; i <= c.generations; ++i) {
+    // Probabilities of this generation (Table 1 or Eq. 19-20).
+    double pc = c.pc;
+    double pm = c.pm;
+    if (c.probabilities == Probabilities::adaptive) {
+      const std::int64_t ii = c.ga_i_origin == 1 ? i : i - 1;
+      pc = ga::adaptive_pc(ii, c.generations, c.pc_reading == Scale::scaled ? c.pc : 1.0);
+      pm = ga::adaptive_pm(ii, c.generations, c.pm_max, c.pm_reading == Scale::scaled ? c.pm : 1.0,
+                           c.pm_at_zero);
+    }
+    // Step 2: roulette selection (Eq. 11), S draws.
+    for (std::size_t s = 0; s < S; ++s) fit[s] = pop[s].fitness;
+    pool.clear();
+    for (std::size_t s = 0; s < S; ++s) pool.push_back(pop[rng::roulette(fit, stream.next_double())]);
+    // Step 3: crossover of the pairs (2p, 2p + 1).
+    for (std::size_t p = 0; p + 1 < S; p += 2) {
+      if (!rng::bernoulli(stream.next_double(), pc)) continue;
+      const std::vector<ga::CrossPoint> pts = ga::crossover_points(pool[p].path, pool[p + 1].path);
+      if (pts.empty()) continue;
+      const ga::CrossPoint pt = pts[rng::uniform_index(stream.next_double(), pts.size())];
+      ga::Children ch = ga::crossover_at(pool[p].path, pool[p + 1].path, pt);
+      if (c.loops == Loops::cut) {
+        ch.first = ga::remove_loops(ch.first);
+        ch.second = ga::remove_loops(ch.second);
+      }
+      Individual c1 = make_individual(g, std::move(ch.first), c, Origin::crossover, i);
+      Individual c2 = make_individual(g, std::move(ch.second), c, Origin::crossover, i);
+      if (c.crossover_keep == CrossoverKeep::children) {
+        pool[p] = std::move(c1);
+        pool[p + 1] = std::move(c2);
+      } else {
+        std::vector<Individual> four{pool[p], pool[p + 1], std::move(c1), std::move(c2)};
+        std::stable_sort(four.begin(), four.end(), [](const Individual& x, const Individual& y) {
+          return x.length < y.length;
+        });
+        pool[p] = std::move(four[0]);
+        pool[p + 1] = std::move(four[1]);
+      }
+    }
+    // IHA step 7: elite retention over parents ++ children, keeping the population size.
+    if (c.elitist) {
+      std::vector<Individual> merged = pop;
+      merged.insert(merged.end(), pool.begin(), pool.end());
+      std::vector<double> mf(merged.size());
+      for (std::size_t s = 0; s < merged.size(); ++s) mf[s] = merged[s].fitness;
+      const std::vector<std::size_t> keep = ga::elite_indices(mf, S);
+      pool.clear();
+      for (const std::size_t k : keep) pool.push_back(merged[k]);
+    }
+    // Step 4: mutation of each individual.
+    for (std::size_t a = 0; a < S; ++a) {
+      if (!rng::bernoulli(stream.next_double(), pm)) continue;
+      const std::size_t n = pool[a].path.size();
+      if (n < 3) continue;
+      const std::size_t k = 1 + rng::uniform_index(stream.next_double(), n - 2);
+      const std::vector<grid::Cell> cand = ga::mutation_candidates(g, pool[a].path, k, policy);
+      if (cand.empty()) continue;
+      std::vector<grid::Cell> path = pool[a].path;
+      path[k] = cand[rng::uniform_index(stream.next_double(), cand.size())];
+      if (c.loops == Loops::cut) path = ga::remove_loops(path);
+      pool[a] = make_individual(g, std::move(path), c, Origin::mutation, i);
+    }
+    pop.swap(pool);
+    // Step 5: record.
+    double sum = 0.0;
+    for (const Individual& ind : pop) {
+      if (better(ind, ev.best, c.result_by)) {
+        ev.best = ind;
+        ev.best_generation = i;
+      }
+      sum += ind.length;
+    }
+    ev.best_per_generation.push_back(ev.best.length);
+    ev.mean_per_generation.push_back(sum / static_cast<double>(S));
+  }
+  return ev;
+}
+
+planners::Result run(const planners::Request& req, const Config& c, rng::Stream& stream) {
+  const grid::Grid& g = grid_of(req);
+  validate(c);
+  require(g.in_bounds(req.start), "GA: start cell outside the grid");
+  require(g.in_bounds(req.goal), "GA: goal cell outside the grid");
+  require(g.free(req.start), "GA: start cell is blocked");
+  require(g.free(req.goal), "GA: goal cell is blocked");
+  planners::Result r;
+  r.params_used = to_params(c);
+  if (req.start == req.goal) {
+    r.found = true;
+    r.path = {req.start};
+    r.extra = Json{{"best_generation", 0}, {"best_origin", "init"}, {"draws", 0}, {"init_chains", 0}};
+    return r;
+  }
+  const InitOutcome init = initial_paths(g, req.start, req.goal, req.policy, c, stream, c.population);
+  if (!init.ok) {
+    r.extra = Json{{"failure", init.failure},
+                   {"draws", stream.doubles_drawn()},
+                   {"init_chains", init.chains}};
+    return r;
+  }
+  std::vector<Individual> pop;
+  pop.reserve(init.paths.size());
+  for (const auto& p : init.paths) pop.push_back(make_individual(g, p, c, Origin::init, 0));
+  Evolution ev = evolve(g, req.policy, c, stream, std::move(pop));
+  r.found = true;
+  r.path = ev.best.path;
+  r.length = ev.best.length;
+  r.iterations = c.generations;
+  r.best_per_iteration = std::move(ev.best_per_generation);
+  r.mean_per_iteration = std::move(ev.mean_per_generation);
+  r.extra = Json{{"best_generation", ev.best_generation},
+                 {"best_origin", std::string(to_string(ev.best.origin))},
+                 {"best_fitness", ev.best.fitness},
+                 {"draws", stream.doubles_drawn()},
+                 {"init_chains", init.chains}};
+  return r;
+}
+
+}  // namespace pathref::genetic
+
+namespace pathref::planners {
+
+namespace {
+
+Planner make(const char* name, const char* description, const genetic::Config& base) {
+  Planner p;
+  p.name = name;
+  p.description = description;
+  p.defaults = genetic::to_params(base);
+  p.run = [defaults = p.defaults, base](const Request& req) {
+    const Json params = merge_params(defaults, req.params);
+    const genetic::Config c = genetic::from_params(base, params);
+    rng::Stream stream(req.seed);
+    return genetic::run(req, c, stream);
+  };
+  return p;
+}
+
+}  // namespace
+
+Planner make_ga_planner() {
+  return make("ga",
+              "single genetic algorithm (Shi et al. 2022 Sec. 4.2: Eq. 8-11, Fig. 3-4), "
+              "spec/shi2022-ga.md",
+              genetic::shi_ga());
+}
+
+Planner make_iga_shi_planner() {
+  return make("iga-shi",
+              "improved GA (Shi et al. 2022 Sec. 4.4.2: Eq. 14-20 fitness, adaptive Pc/Pm), "
+              "spec/shi2022-ga.md",
+              genetic::shi_iga());
+}
+
+Planner make_iga_shi_nomax_planner() {
+  return make("iga-shi-nomax",
+              "IGA* of Shi et al. 2022 Sec. 5.1: iga-shi without the P_m_max cap (pm_max = 1), "
+              "spec/shi2022-ga.md",
+              genetic::shi_iga_nomax());
+}
+
+}  // namespace pathref::planners

@@ -1,0 +1,189 @@
+#pragma once
+/// \file genetic.hpp
+/// One genetic-algorithm engine for the GA planners of Shi et al. 2022: the single GA (`ga`,
+/// Sec. 4.2), the improved GA (`iga-shi`, `iga-shi-nomax` = IGA*, Sec. 4.4.2) and the GA phases
+/// of the two hybrids (planners/hybrid.hpp). The engine composes the pure equations of
+/// equations/ga.hpp (Eq. 8-10, 14-20), the operators of equations/ga_operators.hpp (chain repair,
+/// crossover, mutation, deletion, elite retention) and the pinned random stream; it implements no
+/// equation itself.
+/// Source: Shi et al. 2022, doi:10.3389/fbioe.2022.905983, Sec. 4.2, 4.4.2, 4.4.3.
+/// Spec: spec/shi2022-ga.md (shi2022.plan.ga, shi2022.plan.iga). The spec states each step and
+/// the exact order of the random draws, so that a MATLAB/Python implementation replays a run.
+#include <cstdint>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "pathref/equations/ga.hpp"
+#include "pathref/equations/ga_operators.hpp"
+#include "pathref/grid/grid.hpp"
+#include "pathref/planners/planner.hpp"
+#include "pathref/rng/mt19937.hpp"
+
+namespace pathref::genetic {
+
+using planners::Json;
+
+/// Which fitness ranks the individuals (option `fitness`).
+enum class Fitness {
+  inverse_length,  ///< Eq. 10: 1 / length (single GA)
+  weighted,        ///< Eq. 14-18: a fit1 + b fit2 + c fit3 (improved GA)
+};
+/// Option `ga_probabilities` of spec/shi2022.md "Options for the planners".
+enum class Probabilities {
+  fixed,     ///< P_c, P_m of Table 1 in every generation
+  adaptive,  ///< P_c(i), P_m(i) of Eq. 19-20
+};
+/// Readings `pc_reading` / `pm_reading` of shi2022.eq19 / eq20.
+enum class Scale {
+  printed,  ///< scale 1 (the printed equation)
+  scaled,   ///< scale = Table 1's P_c (resp. P_m)
+};
+/// Option `crossover_keep` (spec shi2022.plan.ga step 3).
+enum class CrossoverKeep {
+  children,  ///< both children replace the parents (Figure 3)
+  best_two,  ///< the two shortest of (parent a, parent b, child 1, child 2), ties in that order
+};
+/// Option `loops` (spec shi2022.plan.ga step 5): what happens to a child that visits a cell twice.
+enum class Loops {
+  keep,  ///< kept as it is (a valid path; the paper is silent)
+  cut,   ///< ga::remove_loops is applied to every child of crossover and mutation
+};
+/// Option `result_by`: which individual is "the best" reported.
+enum class ResultBy {
+  fitness,  ///< the largest fitness ever evaluated (earliest on ties)
+  length,   ///< the shortest path ever evaluated (earliest on ties)
+};
+/// Where an individual was made (reported as `best_origin`).
+enum class Origin { init, aco, crossover, mutation };
+
+[[nodiscard]] Fitness parse_fitness(std::string_view name);
+[[nodiscard]] std::string_view to_string(Fitness v) noexcept;
+[[nodiscard]] Probabilities parse_probabilities(std::string_view name);
+[[nodiscard]] std::string_view to_string(Probabilities v) noexcept;
+[[nodiscard]] Scale parse_scale(std::string_view name);
+[[nodiscard]] std::string_view to_string(Scale v) noexcept;
+[[nodiscard]] CrossoverKeep parse_crossover_keep(std::string_view name);
+[[nodiscard]] std::string_view to_string(CrossoverKeep v) noexcept;
+[[nodiscard]] Loops parse_loops(std::string_view name);
+[[nodiscard]] std::string_view to_string(Loops v) noexcept;
+[[nodiscard]] ResultBy parse_result_by(std::string_view name);
+[[nodiscard]] std::string_view to_string(ResultBy v) noexcept;
+[[nodiscard]] std::string_view to_string(Origin v) noexcept;
+
+/// Every setting of one GA run. Defaults: the single GA with Table 1 values (planner `ga`).
+struct Config {
+  std::int64_t population = 200;  ///< N (Table 1), >= 2
+  std::int64_t generations = 50;  ///< M_g (Table 1), >= 1
+  Fitness fitness = Fitness::inverse_length;
+  ga::FitnessWeights weights{};  ///< a, b, c (Table 1: 5, 4, 1)
+  ga::SmoothnessReading smoothness = ga::SmoothnessReading::per_node;
+  ga::TurnPenalties penalties{};  ///< 5, 100, 1000
+  ga::SafetyOptions safety{};
+  Probabilities probabilities = Probabilities::fixed;
+  double pc = 0.8;      ///< fixed P_c; the scale of Eq. 19 under pc_reading = scaled
+  double pm = 0.1;      ///< fixed P_m; the scale of Eq. 20 under pm_reading = scaled
+  double pm_max = 0.3;  ///< cap of Eq. 20 (1 = no cap: IGA*)
+  Scale pc_reading = Scale::printed;
+  Scale pm_reading = Scale::printed;
+  ga::PmAtZero pm_at_zero = ga::PmAtZero::binary64;
+  int ga_i_origin = 1;  ///< generation numbering of Eq. 19-20: 1 or 0
+  ga::MidRounding mid_rounding = ga::MidRounding::floor;
+  ga::InitReject init_reject = ga::InitReject::blocked;
+  std::int64_t init_attempts = 100000;  ///< chains drawn per individual before giving up, >= 1
+  CrossoverKeep crossover_keep = CrossoverKeep::children;
+  Loops loops = Loops::keep;
+  ResultBy result_by = ResultBy::fitness;
+  /// IHA step 7 (spec shi2022.plan.iha): after crossover, keep the top elite_fraction of
+  /// parents ++ children. false for the single and improved GA.
+  bool elitist = false;
+  double elite_fraction = 0.5;
+};
+
+/// Defaults of planner `ga` (spec shi2022.plan.ga): the Config defaults.
+[[nodiscard]] Config shi_ga();
+/// Defaults of planner `iga-shi` (spec shi2022.plan.iga): fitness weighted, probabilities adaptive.
+[[nodiscard]] Config shi_iga();
+/// Defaults of planner `iga-shi-nomax` (IGA*): shi_iga() with pm_max = 1 (Eq. 20 never caps).
+[[nodiscard]] Config shi_iga_nomax();
+
+/// The planner parameters of a config (names of spec/shi2022-ga.md "Parameters"); every setting
+/// is listed. `elitist` is not a parameter (it is fixed by the planner).
+[[nodiscard]] Json to_params(const Config& c);
+/// `base` with the values of `params` (a merge_params result of to_params(base)); UsageError for
+/// an unknown option name, DomainError for a value outside its domain.
+[[nodiscard]] Config from_params(const Config& base, const Json& params);
+/// DomainError unless every numeric setting is in its domain (spec "Parameters").
+void validate(const Config& c);
+
+/// One member of the population.
+struct Individual {
+  std::vector<grid::Cell> path;
+  double length = 0.0;   ///< metrics::path_length
+  double fitness = 0.0;  ///< the config's fitness
+  Origin origin = Origin::init;
+  std::int64_t born = 0;  ///< generation in which it was made (0 = initial population)
+};
+
+/// The fitness of a path under the config: Eq. 10 or Eq. 14 (with Eq. 15, 16, 18).
+/// Spec: shi2022.plan.ga, shi2022.plan.iga (step "Fitness"). Pre: >= 2 nodes (DomainError).
+[[nodiscard]] double fitness_of(const grid::Grid& g, std::span<const grid::Cell> path,
+                                const Config& c);
+
+/// An individual with its length and fitness computed.
+[[nodiscard]] Individual make_individual(const grid::Grid& g, std::vector<grid::Cell> path,
+                                         const Config& c, Origin origin, std::int64_t born);
+
+/// What initial_paths returns.
+struct InitOutcome {
+  bool ok = false;
+  std::string failure;  ///< "" | "row_blocked" | "init_attempts_exhausted"
+  std::vector<std::vector<grid::Cell>> paths;
+  std::int64_t chains = 0;  ///< chains drawn (accepted + rejected)
+};
+
+/// `count` random initial paths (Sec. 4.2 steps 1-3; spec shi2022.plan.ga "Initialisation"): per
+/// individual, up to init_attempts chains (one draw per intermediate row), each repaired by
+/// ga::connect_chain; stops at the first individual whose attempts are exhausted.
+/// Spec: shi2022.plan.ga. Pre: start != goal, both in bounds and free (DomainError).
+[[nodiscard]] InitOutcome initial_paths(const grid::Grid& g, grid::Cell start, grid::Cell goal,
+                                        grid::CornerPolicy policy, const Config& c,
+                                        rng::Stream& stream, std::int64_t count);
+
+/// What evolve returns.
+struct Evolution {
+  Individual best;                          ///< best by result_by over generations 0..M_g
+  std::int64_t best_generation = 0;         ///< generation that first held it (0 = initial)
+  std::vector<double> best_per_generation;  ///< length of the best-so-far after generation i
+  std::vector<double> mean_per_generation;  ///< mean length of the population after generation i
+};
+
+/// The generation loop (spec shi2022.plan.ga steps 2-5; with c.elitist, shi2022.plan.iha steps
+/// 5-9) from the given population, drawing from `stream`.
+/// Spec: shi2022.plan.ga, shi2022.plan.iga, shi2022.plan.iha.
+/// Pre: population non-empty, every path valid from start to goal (not checked), c validated.
+[[nodiscard]] Evolution evolve(const grid::Grid& g, grid::CornerPolicy policy, const Config& c,
+                               rng::Stream& stream, std::vector<Individual> population);
+
+/// A whole single-GA / improved-GA run (spec shi2022.plan.ga / shi2022.plan.iga): initial
+/// population, then evolve. Result.extra: best_generation, best_origin, draws, init_chains,
+/// failure (when !found).
+/// Spec: shi2022.plan.ga, shi2022.plan.iga
+/// Pre: req.grid set (UsageError); start, goal in bounds and free (DomainError).
+/// Post: found => path valid under req.policy, length = metrics::path_length(path).
+[[nodiscard]] planners::Result run(const planners::Request& req, const Config& c,
+                                   rng::Stream& stream);
+
+}  // namespace pathref::genetic
+
+namespace pathref::planners {
+
+/// Planner "ga": Shi et al. 2022 Sec. 4.2 single GA. Spec: shi2022.plan.ga
+[[nodiscard]] Planner make_ga_planner();
+/// Planner "iga-shi": Shi et al. 2022 Sec. 4.4.2 improved GA. Spec: shi2022.plan.iga
+[[nodiscard]] Planner make_iga_shi_planner();
+/// Planner "iga-shi-nomax": IGA* (no P_m_max cap). Spec: shi2022.plan.iga
+[[nodiscard]] Planner make_iga_shi_nomax_planner();
+
+}  // namespace pathref::planners

@@ -1,0 +1,645 @@
+#include "pathref/reproduce/shi2022.hpp"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <cmath>
+#include <limits>
+
+#include "pathref/core/error.hpp"
+#include "pathref/grid/json_codec.hpp"
+#include "pathref/io/builtin_maps.hpp"
+#include "pathref/io/svg.hpp"
+#include "pathref/reproduce/runs.hpp"
+
+namespace pathref::reproduce {
+
+namespace {
+
+/// One printed number of the paper: where it is and what it is.
+struct PaperNumber {
+  std::string table;    ///< "Table 3"
+  std::string row;      ///< the row label as printed
+  std::string planner;  ///< the column, as a pathref planner name
+  std::string value;    ///< as printed
+  std::string stat;     ///< "length.min" | "length.mean" | "converged_at.mean" | "turns.mean" | "drive_time_s.mean"
+};
+
+/// Tables 3 (simple map), 4 (complex map) and 5 (physical 6x6 experiment) of Shi et al. 2022,
+/// transcribed from ../shared/papers/000_e607a582dcb62616.txt (columns: genetic algorithm,
+/// traditional genetic and ant colony hybrid, improved hybrid).
+const std::vector<PaperNumber>& paper_tables() {
+  static const std::vector<PaperNumber> t = {
+      {"Table 3", "Optimal path length", "ga", "30.38", "length.min"},
+      {"Table 3", "Optimal path length", "hybrid-ga-aco", "29.8", "length.min"},
+      {"Table 3", "Optimal path length", "iha", "29.8", "length.min"},
+      {"Table 3", "Average path length", "ga", "32.38", "length.mean"},
+      {"Table 3", "Average path length", "hybrid-ga-aco", "31.8", "length.mean"},
+      {"Table 3", "Average path length", "iha", "30.97", "length.mean"},
+      {"Table 3", "Average number of iterations", "ga", "26", "converged_at.mean"},
+      {"Table 3", "Average number of iterations", "hybrid-ga-aco", "24", "converged_at.mean"},
+      {"Table 3", "Average number of iterations", "iha", "13", "converged_at.mean"},
+      {"Table 3", "Average number of turns", "ga", "17", "turns.mean"},
+      {"Table 3", "Average number of turns", "hybrid-ga-aco", "8", "turns.mean"},
+      {"Table 3", "Average number of turns", "iha", "2", "turns.mean"},
+      {"Table 4", "Optimal path length", "ga", "33.03", "length.min"},
+      {"Table 4", "Optimal path length", "hybrid-ga-aco", "31.56", "length.min"},
+      {"Table 4", "Optimal path length", "iha", "31.56", "length.min"},
+      {"Table 4", "Average path length", "ga", "34.14", "length.mean"},
+      {"Table 4", "Average path length", "hybrid-ga-aco", "32.38", "length.mean"},
+      {"Table 4", "Average path length", "iha", "32.14", "length.mean"},
+      {"Table 4", "Average number of iterations", "ga", "25", "converged_at.mean"},
+      {"Table 4", "Average number of iterations", "hybrid-ga-aco", "21", "converged_at.mean"},
+      {"Table 4", "Average number of iterations", "iha", "11", "converged_at.mean"},
+      {"Table 4", "Average number of turns", "ga", "18", "turns.mean"},
+      {"Table 4", "Average number of turns", "hybrid-ga-aco", "14", "turns.mean"},
+      {"Table 4", "Average number of turns", "iha", "11", "turns.mean"},
+      {"Table 5", "Average path length (m)", "ga", "8.24", "length.mean"},
+      {"Table 5", "Average path length (m)", "hybrid-ga-aco", "8.24", "length.mean"},
+      {"Table 5", "Average path length (m)", "iha", "7.66", "length.mean"},
+      {"Table 5", "Average plan time (s)", "ga", "24", "drive_time_s.mean"},
+      {"Table 5", "Average plan time (s)", "hybrid-ga-aco", "20", "drive_time_s.mean"},
+      {"Table 5", "Average plan time (s)", "iha", "14", "drive_time_s.mean"},
+      {"Table 5", "Average number of turns", "ga", "6", "turns.mean"},
+      {"Table 5", "Average number of turns", "hybrid-ga-aco", "5", "turns.mean"},
+      {"Table 5", "Average number of turns", "iha", "2", "turns.mean"},
+  };
+  return t;
+}
+
+/// The reductions of §6 ("Result analysis"): IHA against GA and the traditional hybrid.
+struct PaperReduction {
+  std::string map;      ///< "simple" | "complex"
+  std::string other;    ///< planner
+  std::string quantity; ///< "converged_at" | "turns"
+  double percent;
+  std::string printed;
+};
+const std::vector<PaperReduction>& paper_reductions() {
+  static const std::vector<PaperReduction> r = {
+      {"simple", "ga", "converged_at", 50, "50"},
+      {"simple", "hybrid-ga-aco", "converged_at", 46, "46"},
+      {"simple", "ga", "turns", 88, "88"},
+      {"simple", "hybrid-ga-aco", "turns", 75, "75"},
+      {"complex", "ga", "converged_at", 56, "56"},
+      {"complex", "hybrid-ga-aco", "converged_at", 47, "47"},
+      {"complex", "ga", "turns", 39, "39"},
+      {"complex", "hybrid-ga-aco", "turns", 21, "21"},
+  };
+  return r;
+}
+
+std::string quantity_label(const std::string& q) {
+  if (q == "converged_at") return "average number of iterations";
+  if (q == "turns") return "average number of turns";
+  return q;
+}
+
+/// Decimals used in the markdown for a statistic.
+int decimals_of(const std::string& stat) {
+  if (stat.rfind("length", 0) == 0) return 4;
+  return 2;
+}
+
+const Json& stat_of(const Json& series, const std::string& stat) {
+  const auto dot = stat.find('.');
+  return at_or_null(series, {"summary", stat.substr(0, dot), stat.substr(dot + 1)});
+}
+
+/// Why a statistic of these planners is missing: not registered, or no run found a path.
+std::string unavailable_note(const Json& results, std::initializer_list<std::string> names) {
+  std::string note;
+  for (const auto& n : names) {
+    const Json& r = at_or_null(results, {n});
+    std::string why;
+    if (r.is_null() || !r.value("available", false))
+      why = "planner '" + n + "' is not available in this build";
+    else if (at_or_null(r, {"summary", "found"}) == 0)
+      why = "no run of '" + n + "' found a path";
+    if (why.empty()) continue;
+    if (!note.empty()) note += "; ";
+    note += why;
+  }
+  return note;
+}
+
+std::string percent_change(double reduction) {
+  if (reduction > 0.0) return "−" + fixed(reduction, 1) + " %";
+  if (reduction < 0.0) return "+" + fixed(-reduction, 1) + " %";
+  return fixed(0.0, 1) + " %";
+}
+
+Json map_json(const ProtocolMap& m, grid::Cell start, grid::Cell goal) {
+  std::int64_t blocked = 0;
+  for (std::int64_t i = 0; i < m.grid.cell_count(); ++i) blocked += m.grid.blocked(m.grid.cell(i)) ? 1 : 0;
+  return Json{{"file", m.file},
+              {"width", m.grid.width()},
+              {"height", m.grid.height()},
+              {"blocked", blocked},
+              {"rows", grid::grid_to_json(m.grid)},
+              {"start", Json::array({start.x, start.y})},
+              {"goal", Json::array({goal.x, goal.y})}};
+}
+
+/// Claims of one printed table (3, 4 or 5) for the map `key`.
+void table_claims(std::vector<Claim>& claims, const Json& results, const std::string& table,
+                  bool testable, const std::string& untestable_reason) {
+  int k = 0;
+  for (const PaperNumber& p : paper_tables()) {
+    if (p.table != table) continue;
+    ++k;
+    Claim c;
+    c.id = fmt::format("T{}.{}", table.substr(6), k);
+    c.text = fmt::format("{}: {} = {}", planner_label(p.planner), p.row, p.value);
+    c.source = fmt::format("{}, row \"{}\", column {}", table, p.row, planner_label(p.planner));
+    c.paper = p.value;
+    const Json& series = at_or_null(results, {p.planner});
+    const Json& v = stat_of(series, p.stat);
+    c.ours = md_number(v, decimals_of(p.stat));
+    if (!testable) {
+      c.verdict = Verdict::untestable;
+      c.note = untestable_reason;
+    } else if (!v.is_number()) {
+      c.verdict = Verdict::untestable;
+      c.note = unavailable_note(results, {p.planner});
+      if (c.note.empty()) c.note = "no value (no run found a path)";
+    } else {
+      c.rule = "equal when rounded to the printed decimals";
+      c.verdict = matches_printed(v.get<double>(), p.value) ? Verdict::holds : Verdict::fails;
+    }
+    claims.push_back(c);
+    // The other reading of "iterations" for the hybrids (reproduce.converge): the whole curve.
+    if (testable && p.stat == "converged_at.mean" && (p.planner == "hybrid-ga-aco" || p.planner == "iha")) {
+      Claim w = c;
+      w.id += "w";
+      w.text += " (whole-curve reading: colony iterations + GA generations)";
+      const Json& vw = stat_of(series, "converged_at_whole_curve.mean");
+      w.ours = md_number(vw, 2);
+      if (vw.is_number()) {
+        w.verdict = matches_printed(vw.get<double>(), p.value) ? Verdict::holds : Verdict::fails;
+        w.note.clear();
+      }
+      claims.push_back(w);
+    }
+  }
+}
+
+void reduction_claims(std::vector<Claim>& claims, const Json& all_results) {
+  int k = 0;
+  for (const PaperReduction& p : paper_reductions()) {
+    ++k;
+    const Json& results = all_results.at(p.map);
+    Claim c;
+    c.id = fmt::format("R.{}", k);
+    c.text = fmt::format("on the {} map IHA reduces the {} by about {} % against {}", p.map,
+                         quantity_label(p.quantity), p.printed, planner_label(p.other));
+    c.source = p.map == "simple" ? "§6, conclusion on Table 3 (also the abstract for the traditional hybrid)"
+                                 : "§6, conclusion on Table 4 (also the abstract for the traditional hybrid)";
+    c.paper = "−" + p.printed + " %";
+    const Json& from = stat_of(at_or_null(results, {p.other}), p.quantity + ".mean");
+    const Json& to = stat_of(at_or_null(results, {"iha"}), p.quantity + ".mean");
+    c.rule = fmt::format("pathref's reduction 100·(other − IHA)/other of the means within ±{} points",
+                         fixed(about_percent_tolerance, 0));
+    auto judge = [&](Claim& cl, const Json& f, const Json& t) {
+      if (!f.is_number() || !t.is_number() || f.get<double>() <= 0.0) {
+        cl.verdict = Verdict::untestable;
+        cl.ours = "—";
+        cl.note = unavailable_note(results, {p.other, "iha"});
+        if (cl.note.empty()) cl.note = "the mean of the other planner is 0 or undefined";
+        cl.rule.clear();
+      } else {
+        const double r = reduction_percent(f.get<double>(), t.get<double>());
+        cl.ours = fmt::format("{} ({} → {})", percent_change(r), md_number(f, 2), md_number(t, 2));
+        cl.verdict = judge_about_percent(r, p.percent);
+      }
+    };
+    judge(c, from, to);
+    claims.push_back(c);
+    if (p.quantity == "converged_at") {
+      Claim w = c;
+      w.id += "w";
+      w.text += " (whole-curve reading of the iterations)";
+      w.rule = c.rule.empty() ? fmt::format("pathref's reduction 100·(other − IHA)/other of the means within ±{} points",
+                                            fixed(about_percent_tolerance, 0))
+                              : c.rule;
+      judge(w, stat_of(at_or_null(results, {p.other}), "converged_at_whole_curve.mean"),
+            stat_of(at_or_null(results, {"iha"}), "converged_at_whole_curve.mean"));
+      claims.push_back(w);
+    }
+  }
+}
+
+std::string welch_text(const Json& a, const Json& b, const std::string& key) {
+  const auto va = run_values(a, key);
+  const auto vb = run_values(b, key);
+  if (va.size() < 2 || vb.size() < 2) return "";
+  const auto t = welch_t(va, vb);
+  return t ? fmt::format("Welch t = {}", fixed(*t, 2)) : std::string("both samples constant");
+}
+
+/// "A's mean `key` is smaller than B's" (direction claims).
+Claim less_claim(const std::string& id, const std::string& text, const std::string& source,
+                 const Json& results, const std::string& a, const std::string& b,
+                 const std::string& key) {
+  Claim c;
+  c.id = id;
+  c.text = text;
+  c.source = source;
+  c.paper = planner_label(a) + " < " + planner_label(b);
+  const Json& ma = stat_of(at_or_null(results, {a}), key + ".mean");
+  const Json& mb = stat_of(at_or_null(results, {b}), key + ".mean");
+  if (!ma.is_number() || !mb.is_number()) {
+    c.ours = "—";
+    c.verdict = Verdict::untestable;
+    c.note = unavailable_note(results, {a, b});
+    if (c.note.empty()) c.note = "no value";
+    return c;
+  }
+  const int d = decimals_of(key);
+  c.ours = fmt::format("{} vs {}", md_number(ma, d), md_number(mb, d));
+  c.rule = "strictly smaller mean over the runs";
+  c.verdict = ma.get<double>() < mb.get<double>() ? Verdict::holds : Verdict::fails;
+  c.note = welch_text(at_or_null(results, {a}), at_or_null(results, {b}), key);
+  return c;
+}
+
+}  // namespace
+
+const std::vector<std::string>& shi2022_planners() {
+  static const std::vector<std::string> v = {"ga", "aco", "iaco-shi", "iga-shi", "hybrid-ga-aco", "iha",
+                                             "iaco-shi-nomin", "iga-shi-nomax", "astar", "dijkstra"};
+  return v;
+}
+
+Orientation parse_orientation(std::string_view name) {
+  if (name == "paper") return Orientation::paper;
+  if (name == "file") return Orientation::file;
+  throw UsageError("unknown orientation '" + std::string(name) + "' (expected paper or file)");
+}
+
+std::string_view to_string(Orientation o) noexcept { return o == Orientation::paper ? "paper" : "file"; }
+
+grid::Grid oriented(const grid::Grid& file_grid, Orientation o) {
+  if (o == Orientation::file) return file_grid;
+  std::vector<std::string> rows = file_grid.to_rows_top_first();
+  std::reverse(rows.begin(), rows.end());
+  return grid::Grid::from_rows_top_first(rows);
+}
+
+std::pair<grid::Cell, grid::Cell> shi2022_endpoints(const grid::Grid& g, Orientation o) {
+  if (o == Orientation::paper) return {grid::Cell{0, 0}, grid::Cell{g.width() - 1, g.height() - 1}};
+  return {grid::Cell{0, g.height() - 1}, grid::Cell{g.width() - 1, 0}};
+}
+
+Json run_shi2022(const ShiConfig& cfg) {
+  require(cfg.runs >= 1 && cfg.runs <= 10000, "run_shi2022: runs must lie in [1, 10000]");
+  const auto t0 = std::chrono::steady_clock::now();
+  Json doc = Json::object();
+  doc["format"] = "pathref-reproduce";
+  doc["format_version"] = 1;
+  doc["paper"] = "shi2022";
+  doc["reference"] =
+      "Shi, Huang, Jiang, Sun, Tong, Xie, Fang (2022). Path Planning Optimization of Intelligent Vehicle "
+      "Based on Improved Genetic and Ant Colony Hybrid Algorithm. Front. Bioeng. Biotechnol. 10:905983. "
+      "doi:10.3389/fbioe.2022.905983";
+  const auto last_seed = static_cast<std::uint64_t>(cfg.seed) + static_cast<std::uint64_t>(cfg.runs) - 1;
+  require(last_seed <= 4294967295ULL, "run_shi2022: seed + runs - 1 must not exceed 4294967295");
+  doc["protocol"] = Json{{"runs", cfg.runs},
+                         {"seeds", Json::array({cfg.seed, last_seed})},
+                         {"policy", std::string(grid::to_string(cfg.policy))},
+                         {"orientation", std::string(to_string(cfg.orientation))},
+                         {"quick", cfg.quick},
+                         {"planners", shi2022_planners()},
+                         {"deterministic_planners_runs", 1},
+                         {"drive_model", "drive.path-time, Mecanum base, cell 1 m, spec/mecanum.md defaults"}};
+  Json maps = Json::object();
+  Json results = Json::object();
+  const ProtocolMap simple{cfg.simple.file, oriented(cfg.simple.grid, cfg.orientation)};
+  const ProtocolMap complex{cfg.complex.file, oriented(cfg.complex.grid, cfg.orientation)};
+  const std::vector<std::pair<std::string, const ProtocolMap*>> inputs = {{"simple", &simple}, {"complex", &complex}};
+  for (const auto& [key, m] : inputs) {  // every endpoint is checked before the first run
+    const auto [start, goal] = shi2022_endpoints(m->grid, cfg.orientation);
+    for (const auto& [what, c] : {std::pair{"start", start}, std::pair{"goal", goal}})
+      if (m->grid.blocked(c))
+        throw UsageError(fmt::format("{} ({}, {}) is a blocked cell of the {} map '{}'", what, c.x, c.y, key, m->file));
+  }
+  for (const auto& [key, m] : inputs) {
+    const auto [start, goal] = shi2022_endpoints(m->grid, cfg.orientation);
+    maps[key] = map_json(*m, start, goal);
+    maps[key]["orientation"] = std::string(to_string(cfg.orientation));
+    Json res = Json::object();
+    for (const std::string& name : shi2022_planners()) {
+      const bool deterministic = name == "astar" || name == "dijkstra";
+      res[name] = run_series(name, Json::object(), m->grid, start, goal, cfg.policy, cfg.seed,
+                             deterministic ? 1 : cfg.runs, cfg.quick, cfg.progress, "shi2022 " + key);
+    }
+    results[key] = res;
+  }
+  // Table 5: the physical 6x6 experiment on the reconstructed built-in map shi6x6.
+  {
+    const io::BuiltinMap* b = io::find_builtin_map("shi6x6");
+    if (b != nullptr) {
+      const io::MapFile mf = io::load_builtin_map(*b);
+      ProtocolMap pm{"builtin:shi6x6", mf.grid};
+      const grid::Cell start = mf.start.value_or(grid::Cell{0, 0});
+      const grid::Cell goal = mf.goal.value_or(grid::Cell{mf.grid.width() - 1, mf.grid.height() - 1});
+      maps["shi6x6"] = map_json(pm, start, goal);
+      Json res = Json::object();
+      for (const std::string& name : {std::string("ga"), std::string("hybrid-ga-aco"), std::string("iha"),
+                                      std::string("dijkstra")}) {
+        const bool deterministic = name == "dijkstra";
+        res[name] = run_series(name, Json::object(), mf.grid, start, goal, cfg.policy, cfg.seed,
+                               deterministic ? 1 : cfg.runs, cfg.quick, cfg.progress, "shi2022 shi6x6");
+      }
+      results["shi6x6"] = res;
+    }
+  }
+  doc["maps"] = maps;
+  doc["results"] = results;
+
+  Json paper = Json::array();
+  for (const PaperNumber& p : paper_tables())
+    paper.push_back(Json{{"table", p.table}, {"row", p.row}, {"column", planner_label(p.planner)},
+                         {"planner", p.planner}, {"value", p.value}, {"compared_with", p.stat}});
+  doc["paper_numbers"] = paper;
+
+  std::vector<Claim> claims;
+  // Protocol check: the A* optimum equals the printed optimum (identifies the maps).
+  for (const auto& [key, printed, table] : {std::tuple{std::string("simple"), std::string("29.8"), std::string("Table 3")},
+                                            std::tuple{std::string("complex"), std::string("31.56"), std::string("Table 4")}}) {
+    Claim c;
+    c.id = key == "simple" ? "M.1" : "M.2";
+    c.text = fmt::format("the {} map is the paper's: its shortest path ({} policy) is the printed optimum {}", key,
+                         grid::to_string(cfg.policy), printed);
+    c.source = table + ", row \"Optimal path length\" (traditional and improved hybrid)";
+    c.paper = printed;
+    const Json& v = at_or_null(results, {key, "dijkstra", "summary", "length", "min"});
+    c.ours = md_number(v, 4);
+    if (v.is_number()) {
+      c.rule = "Dijkstra's shortest length equal when rounded to the printed decimals";
+      c.verdict = matches_printed(v.get<double>(), printed) ? Verdict::holds : Verdict::fails;
+    } else {
+      c.verdict = Verdict::untestable;
+      c.note = "no shortest path (Dijkstra unavailable or goal unreachable)";
+    }
+    claims.push_back(c);
+  }
+  table_claims(claims, results.at("simple"), "Table 3", true, "");
+  table_claims(claims, results.at("complex"), "Table 4", true, "");
+  {
+    Claim c;
+    c.id = "F8.1";
+    c.text = "A* makes 11 turns on the simple map";
+    c.source = "§5.1, text on Figure 8";
+    c.paper = "11";
+    const Json& v = at_or_null(results, {"simple", "astar", "summary", "turns", "min"});
+    c.ours = md_number(v, 0);
+    if (v.is_number()) {
+      c.rule = "equal";
+      c.verdict = matches_printed(v.get<double>(), "11") ? Verdict::holds : Verdict::fails;
+      c.note = "A*'s path among equally short ones depends on its tie-breaking (spec/search.md)";
+    } else {
+      c.verdict = Verdict::untestable;
+      c.note = unavailable_note(results.at("simple"), {"astar"});
+    }
+    claims.push_back(c);
+  }
+  reduction_claims(claims, results);
+  int k = 0;
+  for (const std::string key : {"simple", "complex"})
+    for (const std::string other : {"ga", "hybrid-ga-aco"})
+      claims.push_back(less_claim(fmt::format("L.{}", ++k),
+                                  fmt::format("IHA's average path length is shorter than {}'s on the {} map",
+                                              planner_label(other), key),
+                                  key == "simple" ? "Table 3 and §5.1 on Figure 9" : "Table 4 and §5.2 on Figure 12",
+                                  results.at(key), "iha", other, "length"));
+  claims.push_back(less_claim("E.1",
+                              "without the lower limit ρ_min, IACO* stops improving and ends on longer paths than IACO",
+                              "§5.1, trial-and-error experiment, Figure 10", results.at("simple"), "iaco-shi",
+                              "iaco-shi-nomin", "length"));
+  claims.push_back(less_claim("E.2",
+                              "without the upper limit P_m_max, IGA* deviates from the better path (longer final paths than IGA)",
+                              "§5.1, trial-and-error experiment, Figure 10", results.at("simple"), "iga-shi",
+                              "iga-shi-nomax", "length"));
+  claims.push_back(less_claim("E.3", "IHA ends on shorter paths than IACO*", "§5.1, Figure 10",
+                              results.at("simple"), "iha", "iaco-shi-nomin", "length"));
+  claims.push_back(less_claim("E.4", "IHA ends on shorter paths than IGA*", "§5.1, Figure 10",
+                              results.at("simple"), "iha", "iga-shi-nomax", "length"));
+  if (results.contains("shi6x6"))
+    table_claims(claims, results.at("shi6x6"), "Table 5", false,
+                 "the paper's 6×6 obstacle layout is not published; pathref's shi6x6 is a reconstruction "
+                 "(spec/cli.md#builtin-maps) and the plan time of the physical vehicle is not defined");
+  Json cj = Json::array();
+  for (const Claim& c : claims) cj.push_back(claim_json(c));
+  doc["claims"] = cj;
+  Json prov = provenance_json(cfg.provenance);
+  prov["total_wall_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  doc["provenance"] = prov;
+  return doc;
+}
+
+namespace {
+
+std::string paper_beside_table(const Json& doc, const std::string& map_key, const std::string& table) {
+  const Json& results = at_or_null(doc, {"results", map_key});
+  std::string s = md_row({"row (" + table + ")", "GA paper", "GA pathref", "traditional hybrid paper",
+                          "traditional hybrid pathref", "IHA paper", "IHA pathref"});
+  s += md_row({"---", "---:", "---:", "---:", "---:", "---:", "---:"});
+  std::string row;
+  std::vector<std::string> cells;
+  for (const PaperNumber& p : paper_tables()) {
+    if (p.table != table) continue;
+    if (p.row != row) {
+      if (!cells.empty()) s += md_row(cells);
+      row = p.row;
+      const std::string stat_desc = p.stat == "length.min"           ? "min length"
+                                    : p.stat == "length.mean"        ? "mean length"
+                                    : p.stat == "converged_at.mean"  ? "mean metrics.converge, GA phase for hybrids"
+                                    : p.stat == "turns.mean"         ? "mean metrics.turns"
+                                                                     : "mean drive time (Mecanum model)";
+      cells = {p.row + " (pathref: " + stat_desc + ")"};
+    }
+    cells.push_back(p.value);
+    cells.push_back(md_number(stat_of(at_or_null(results, {p.planner}), p.stat), decimals_of(p.stat)));
+  }
+  if (!cells.empty()) s += md_row(cells);
+  return s;
+}
+
+std::string cell_text(const Json& c) {
+  return fmt::format("({}, {})", c.at(0).get<std::int64_t>(), c.at(1).get<std::int64_t>());
+}
+
+std::vector<io::PathLayer> best_layers(const Json& results, const std::vector<std::string>& names) {
+  std::vector<io::PathLayer> layers;
+  for (const auto& n : names) {
+    const Json& best = at_or_null(results, {n, "best"});
+    if (!best.is_object()) continue;
+    io::PathLayer l;
+    l.label = fmt::format("{} (seed {}, length {}, {} turns)", planner_label(n), best.at("seed").get<std::int64_t>(),
+                          md_number(best.at("length"), 2), best.at("turns").get<std::int64_t>());
+    l.path = grid::path_from_json(best.at("path"));
+    layers.push_back(l);
+  }
+  return layers;
+}
+
+std::vector<io::Series> curves(const Json& results, const std::vector<std::string>& names, const std::string& key,
+                               const std::string& suffix) {
+  std::vector<io::Series> out;
+  for (const auto& n : names) {
+    const Json* cp = &at_or_null(results, {n, key});
+    if (cp->is_null() && key.size() > 6 && key.substr(key.size() - 6) == "_phase")
+      cp = &at_or_null(results, {n, key.substr(0, key.size() - 6)});  // no phases: the whole curve
+    const Json& c = *cp;
+    if (!c.is_array() || c.empty()) continue;
+    io::Series s;
+    s.label = planner_label(n) + suffix;
+    for (std::size_t i = 0; i < c.size(); ++i) {
+      s.x.push_back(static_cast<double>(i + 1));
+      s.y.push_back(c[i].is_number() ? c[i].get<double>() : std::numeric_limits<double>::infinity());
+    }
+    out.push_back(s);
+  }
+  return out;
+}
+
+}  // namespace
+
+std::vector<std::pair<std::string, std::string>> shi2022_figures(const Json& doc) {
+  std::vector<std::pair<std::string, std::string>> figs;
+  const std::vector<std::string> fig8 = {"ga", "hybrid-ga-aco", "iha", "astar"};
+  const std::vector<std::string> fig9 = {"ga", "hybrid-ga-aco", "iha"};
+  const Json& runs = at_or_null(doc, {"protocol", "runs"});
+  const std::string n = runs.is_number() ? std::to_string(runs.get<std::int64_t>()) : "?";
+  for (const auto& [key, fig_paths, fig_conv] :
+       {std::tuple{std::string("simple"), std::string("Figure 8"), std::string("Figure 9")},
+        std::tuple{std::string("complex"), std::string("Figure 11"), std::string("Figure 12")}}) {
+    const Json& m = at_or_null(doc, {"maps", key});
+    if (!m.is_object()) continue;
+    const grid::Grid g = grid::grid_from_json(m.at("rows"));
+    const Json& results = at_or_null(doc, {"results", key});
+    figs.emplace_back(key + "-paths.svg",
+                      io::svg_map(g, grid::cell_from_json(m.at("start")), grid::cell_from_json(m.at("goal")),
+                                  best_layers(results, fig8),
+                                  fmt::format("{} map ({}): best of {} runs (cf. {})", key,
+                                              std::filesystem::path(m.at("file").get<std::string>()).filename().string(), n,
+                                              fig_paths)));
+    figs.emplace_back(key + "-convergence.svg",
+                      io::svg_line_chart(curves(results, fig9, "mean_best_curve_phase", ""),
+                                         io::ChartOptions{fmt::format("{} map: best length per iteration, mean of {} runs (cf. {})",
+                                                                      key, n, fig_conv),
+                                                          "iteration", "path length"}));
+  }
+  const Json& simple = at_or_null(doc, {"results", "simple"});
+  if (simple.is_object()) {
+    const std::vector<std::string> fig10 = {"iaco-shi", "iaco-shi-nomin", "iga-shi", "iga-shi-nomax", "iha"};
+    figs.emplace_back("trial-error.svg",
+                      io::svg_line_chart(curves(simple, fig10, "mean_best_curve_phase", ""),
+                                         io::ChartOptions{fmt::format("trial and error: best length, mean of {} runs (cf. Fig. 10)", n),
+                                                          "iteration", "path length"}));
+    figs.emplace_back("trial-error-iteration-mean.svg",
+                      io::svg_line_chart(curves(simple, fig10, "mean_iteration_curve_phase", ""),
+                                         io::ChartOptions{fmt::format("trial and error: iteration mean length, mean of {} runs", n),
+                                                          "iteration", "path length"}));
+  }
+  return figs;
+}
+
+std::string shi2022_markdown(const Json& doc, const std::string& figure_dir, const std::string& json_name) {
+  std::string s;
+  const Json& proto = doc.at("protocol");
+  const auto runs = proto.at("runs").get<std::int64_t>();
+  const auto seeds = proto.at("seeds");
+  s += "# Reproduction: Shi et al. 2022 (improved GA–ACO hybrid), Tables 3–5 and Figures 8–12\n\n";
+  s += "<!-- generated by `pathref reproduce shi2022`; do not edit by hand -->\n\n";
+  s += doc.at("reference").get<std::string>() + "\n\n";
+  if (proto.at("quick").get<bool>())
+    s += "**QUICK RUN** (`--quick`: reduced iterations, ants and population; a smoke test, not a reproduction).\n\n";
+  s += "## Summary\n\n" + md_verdict_summary(doc.at("claims")) +
+       "\nThe verdict of each claim and the rule that decided it are in [Claims](#claims). Protocol: spec/reproduce.md.\n\n";
+  s += "## Protocol\n\n";
+  const bool paper = proto.value("orientation", "paper") == "paper";
+  s += fmt::format("- maps: simple = `{}`, complex = `{}` (0/1 matrices); start = the first cell of the file's first "
+                   "row, goal = the last cell of its last row, as in the MATLAB scripts the maps come from. {} In "
+                   "pathref coordinates ((0,0) lower left): start {}, goal {}. Lengths and turns do not depend on "
+                   "the orientation.\n",
+                   doc.at("maps").at("simple").at("file").get<std::string>(),
+                   doc.at("maps").at("complex").at("file").get<std::string>(),
+                   paper ? "Orientation `paper`: the file's first row is y = 0, as Shi draws the maps (S lower left, "
+                           "T upper right) and numbers the cells (Figure 1A; cell index = MATLAB node number − 1)."
+                         : "Orientation `file`: the file's first row is the top row (spec/formats.md), so the maps "
+                           "appear flipped top to bottom against Shi's figures.",
+                   cell_text(doc.at("maps").at("simple").at("start")), cell_text(doc.at("maps").at("simple").at("goal")));
+  s += fmt::format("- corner policy `{}` (a diagonal step needs both orthogonal neighbours free): under it the "
+                   "shortest paths are the printed optima 29.8 and 31.56 (claims M.1, M.2); under corner cutting "
+                   "they would be 28.63 and 30.97.\n",
+                   proto.at("policy").get<std::string>());
+  s += fmt::format("- {} runs per stochastic planner and map, seeds {}–{} (A* and Dijkstra: one run); every planner "
+                   "with its registered defaults (= Table 1; the exact values are in `{}` under "
+                   "`results.MAP.PLANNER.params_used`).\n",
+                   runs, seeds[0].get<std::int64_t>(), seeds[1].get<std::int64_t>(), json_name);
+  s += "- per run: path length (metrics.length), turns (metrics.turns), iterations to converge (metrics.converge of "
+       "the planner's best-so-far curve), validity (metrics.valid-path), drive time (drive.path-time, Mecanum base, "
+       "1 m cells, spec/mecanum.md defaults: a measure of what the turns cost, not a paper quantity) and wall-clock "
+       "time (a measurement of this machine, never compared).\n";
+  s += "- statistics over the runs that found a path: minimum, mean, **sample** standard deviation (n − 1).\n\n";
+  for (const auto& [key, table, fig] : {std::tuple{std::string("simple"), std::string("Table 3"), std::string("8, 9")},
+                                        std::tuple{std::string("complex"), std::string("Table 4"), std::string("11, 12")}}) {
+    s += fmt::format("## {} map — {}\n\n", key == "simple" ? "Simple" : "Complex", table);
+    s += paper_beside_table(doc, key, table) + "\n";
+    s += "All planners (pathref):\n\n";
+    s += md_results_table(doc.at("results").at(key), shi2022_planners(), key) + "\n";
+    s += fmt::format("![best paths, {} map]({}/{}-paths.svg) (cf. Figure {})\n\n", key, figure_dir, key,
+                     fig.substr(0, fig.find(',')));
+    s += fmt::format("![convergence, {} map]({}/{}-convergence.svg) (cf. Figure {})\n\n", key, figure_dir, key,
+                     fig.substr(fig.find(' ') + 1));
+  }
+  s += "## Trial-and-error experiment (Figure 10)\n\n";
+  s += "IACO* = `iaco-shi-nomin` (no ρ_min), IGA* = `iga-shi-nomax` (no P_m_max), on the simple map; their rows are in "
+       "the simple-map table above, the claims E.1–E.4 below.\n\n";
+  s += fmt::format("![trial and error]({}/trial-error.svg)\n\n![trial and error, iteration means]({}/trial-error-iteration-mean.svg)\n\n",
+                   figure_dir, figure_dir);
+  if (doc.at("results").contains("shi6x6")) {
+    s += "## Physical experiment — Table 5 (cannot be tested)\n\n";
+    s += "The paper's 6×6 platform layout is not published. pathref's built-in `shi6x6` is a reconstruction "
+         "(spec/cli.md#builtin-maps); its shortest path under the corner policy differs from the printed "
+         "IHA length (7.66 m = 2 + 4√2 with 1 m cells), so it is certainly not the paper's layout. The numbers "
+         "below are pathref's on the reconstruction, for orientation only; \"plan time\" is compared with the "
+         "Mecanum drive-time model, which is a pathref assumption.\n\n";
+    s += paper_beside_table(doc, "shi6x6", "Table 5") + "\n";
+    s += md_results_table(doc.at("results").at("shi6x6"), {"ga", "hybrid-ga-aco", "iha", "dijkstra"}, "shi6x6") + "\n";
+  }
+  {
+    std::string notes;
+    for (auto it = doc.at("results").begin(); it != doc.at("results").end(); ++it)
+      for (auto jt = it.value().begin(); jt != it.value().end(); ++jt) {
+        const Json& r = jt.value();
+        if (!r.value("available", false)) {
+          notes += fmt::format("- `{}` on the {} map: {}\n", jt.key(), it.key(), r.value("reason", ""));
+          continue;
+        }
+        const auto found = r.at("summary").at("found").get<std::int64_t>();
+        const auto runs_n = r.at("summary").at("runs").get<std::int64_t>();
+        if (found < runs_n) {
+          std::string failures;
+          for (const Json& run : r.at("runs"))
+            if (run.contains("failure") && failures.find(run.at("failure").get<std::string>()) == std::string::npos)
+              failures += (failures.empty() ? "" : ", ") + run.at("failure").get<std::string>();
+          notes += fmt::format("- `{}` on the {} map found a path in {} of {} runs{}\n", jt.key(), it.key(), found,
+                               runs_n, failures.empty() ? "" : " (planner's extra.failure: " + failures + ")");
+        }
+      }
+    if (!notes.empty())
+      s += "## Runs without a path\n\nStatistics are over the runs that found a path; a planner without any has no "
+           "statistics, and the claims that need it are \"cannot be tested\".\n\n" + notes + "\n";
+  }
+  s += "## Claims\n\n";
+  s += md_claims(doc.at("claims")) + "\n";
+  s += "## Provenance\n\n" + md_provenance(doc.at("provenance"), json_name);
+  return s;
+}
+
+}  // namespace pathref::reproduce

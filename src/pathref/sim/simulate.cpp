@@ -1,0 +1,649 @@
+#include "pathref/sim/simulate.hpp"
+
+#include <cmath>
+#include <filesystem>
+#include <limits>
+#include <optional>
+#include <string>
+#include <utility>
+
+#include "pathref/core/error.hpp"
+#include "pathref/equations/heuristics.hpp"
+#include "pathref/equations/rls.hpp"
+#include "pathref/grid/json_codec.hpp"
+#include "pathref/io/map_file.hpp"
+#include "pathref/planners/planner.hpp"
+#include "pathref/planners/search.hpp"
+#include "pathref/rng/mt19937.hpp"
+#include "pathref/sim/motion.hpp"
+#include "pathref/sim/random_map.hpp"
+
+namespace pathref::sim {
+
+// ---------------------------------------------------------------------------------------------
+// Scenario parsing (han.sim.scenario-format)
+
+namespace {
+
+class Reader {
+ public:
+  explicit Reader(std::string_view file) : file_(file) {}
+
+  [[noreturn]] void fail(const std::string& ptr, const std::string& what) const {
+    throw ParseError(file_, 0, 0, (ptr.empty() ? std::string("/") : ptr) + ": " + what);
+  }
+
+  static std::string kind(const Json& v) {
+    if (v.is_number_float()) return "a non-integer number";
+    if (v.is_number()) return "an integer";
+    const std::string t = v.type_name();
+    return (t == "object" || t == "array" ? "an " : "a ") + t;
+  }
+
+  double number(const Json& v, const std::string& ptr, double lo, double hi, bool lo_open) const {
+    const std::string want = std::string("expected a number in ") + (lo_open ? "(" : "[") +
+                             fmt(lo) + ", " + fmt(hi) + "]";
+    if (!v.is_number()) fail(ptr, want + ", got " + kind(v));
+    const double x = v.get<double>();
+    if (!std::isfinite(x) || x < lo || x > hi || (lo_open && x == lo)) fail(ptr, want + ", got " + fmt(x));
+    return x;
+  }
+
+  std::int64_t integer(const Json& v, const std::string& ptr, std::int64_t lo, std::int64_t hi) const {
+    const std::string want = "expected an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
+    if (v.is_number_unsigned()) {
+      const auto u = v.get<std::uint64_t>();
+      if (u > static_cast<std::uint64_t>(hi)) fail(ptr, want + ", got " + std::to_string(u));
+      return static_cast<std::int64_t>(u);
+    }
+    if (v.is_number_integer()) {
+      const auto i = v.get<std::int64_t>();
+      if (i < lo || i > hi) fail(ptr, want + ", got " + std::to_string(i));
+      return i;
+    }
+    fail(ptr, want + ", got " + kind(v));
+  }
+
+  std::string string(const Json& v, const std::string& ptr) const {
+    if (!v.is_string()) fail(ptr, "expected a string, got " + kind(v));
+    return v.get<std::string>();
+  }
+
+  Vec2 point(const Json& v, const std::string& ptr, double bound) const {
+    if (!v.is_array() || v.size() != 2) fail(ptr, "expected [x, y] (an array of two numbers), got " + kind(v));
+    return Vec2{number(v[0], ptr + "/0", -bound, bound, false), number(v[1], ptr + "/1", -bound, bound, false)};
+  }
+
+  grid::Cell cell(const Json& v, const std::string& ptr) const {
+    if (!v.is_array() || v.size() != 2) fail(ptr, "expected a cell [x, y] (two integers), got " + kind(v));
+    return grid::Cell{integer(v[0], ptr + "/0", 0, 1000000), integer(v[1], ptr + "/1", 0, 1000000)};
+  }
+
+  void keys(const Json& obj, const std::string& ptr, std::initializer_list<const char*> allowed) const {
+    if (!obj.is_object()) fail(ptr, "expected an object, got " + kind(obj));
+    for (auto it = obj.begin(); it != obj.end(); ++it) {
+      bool ok = false;
+      for (const char* k : allowed) ok = ok || it.key() == k;
+      if (!ok) {
+        std::string list;
+        for (const char* k : allowed) list += std::string(list.empty() ? "" : ", ") + k;
+        fail(ptr + "/" + it.key(), "unknown key (expected one of: " + list + ")");
+      }
+    }
+  }
+
+  static std::string fmt(double x) {
+    std::string s = nlohmann::json(x).dump();
+    return s;
+  }
+
+ private:
+  std::string file_;
+};
+
+const Json* find(const Json& obj, const char* key) {
+  const auto it = obj.find(key);
+  return it == obj.end() ? nullptr : &*it;
+}
+
+}  // namespace
+
+Scenario scenario_from_json(const Json& doc, std::string_view file, const std::string& base_dir) {
+  const Reader rd(file);
+  rd.keys(doc, "", {"format", "map", "start", "goal", "policy", "path", "planner", "seed", "dt",
+                    "horizon", "robot", "margin", "noise", "t_max", "lambda", "frontal_cos",
+                    "obstacles", "comment"});
+  Scenario s;
+  const Json* fmtv = find(doc, "format");
+  if (fmtv == nullptr) rd.fail("/format", "missing (expected \"pathref-sim 1\")");
+  if (rd.string(*fmtv, "/format") != "pathref-sim 1")
+    rd.fail("/format", "expected \"pathref-sim 1\", got " + fmtv->dump());
+  // --- map
+  const Json* mapv = find(doc, "map");
+  if (mapv == nullptr) rd.fail("/map", "missing (expected a map file name, rows or {\"random\": ...})");
+  std::optional<grid::Cell> map_start, map_goal;
+  if (mapv->is_string()) {
+    const std::string name = mapv->get<std::string>();
+    std::filesystem::path p(name);
+    if (p.is_relative() && !base_dir.empty()) p = std::filesystem::path(base_dir) / p;
+    io::MapReadOptions opt;
+    opt.limits.max_cells = max_sim_cells;
+    opt.limits.max_side = max_sim_cells;
+    auto loaded = io::load_map_file(p.string(), opt);
+    s.grid = std::move(loaded.map.grid);
+    map_start = loaded.map.start;
+    map_goal = loaded.map.goal;
+  } else if (mapv->is_array()) {
+    const auto h = static_cast<std::int64_t>(mapv->size());
+    if (h < 1 || h > 1000) rd.fail("/map", "expected 1 to 1000 rows, got " + std::to_string(h));
+    std::vector<std::string> rows;
+    for (std::size_t r = 0; r < mapv->size(); ++r) {
+      const std::string ptr = "/map/" + std::to_string(r);
+      const std::string row = rd.string((*mapv)[r], ptr);
+      if (row.empty() || row.size() > 1000) rd.fail(ptr, "expected a row of 1 to 1000 characters");
+      if (r > 0 && row.size() != rows[0].size())
+        rd.fail(ptr, "expected " + std::to_string(rows[0].size()) + " characters like row 0, got " +
+                         std::to_string(row.size()));
+      const auto bad = row.find_first_not_of(".#");
+      if (bad != std::string::npos)
+        rd.fail(ptr, "expected only '.' (free) and '#' (blocked), got '" + row.substr(bad, 1) +
+                         "' at column " + std::to_string(bad + 1));
+      rows.push_back(row);
+    }
+    if (static_cast<std::int64_t>(rows[0].size()) * h > max_sim_cells)
+      rd.fail("/map", "more than " + std::to_string(max_sim_cells) + " cells");
+    s.grid = grid::Grid::from_rows_top_first(rows);
+  } else if (mapv->is_object()) {
+    rd.keys(*mapv, "/map", {"random"});
+    const Json* rv = find(*mapv, "random");
+    if (rv == nullptr) rd.fail("/map/random", "missing (expected {\"seed\", \"edge\", \"ratio\"})");
+    rd.keys(*rv, "/map/random", {"seed", "edge", "ratio"});
+    for (const char* k : {"seed", "edge", "ratio"})
+      if (find(*rv, k) == nullptr) rd.fail(std::string("/map/random/") + k, "missing");
+    const auto seed = rd.integer(rv->at("seed"), "/map/random/seed", 0, 4294967295LL);
+    const auto edge = rd.integer(rv->at("edge"), "/map/random/edge", random_map_min_edge, random_map_max_edge);
+    const double ratio = rd.number(rv->at("ratio"), "/map/random/ratio", 0.0, 1.0, false);
+    try {
+      auto m = random_map(static_cast<std::uint32_t>(seed), edge, ratio);
+      s.grid = std::move(m.grid);
+      map_start = m.start;
+      map_goal = m.goal;
+    } catch (const DomainError& e) {
+      rd.fail("/map/random", e.what());
+    }
+  } else {
+    rd.fail("/map", "expected a map file name, an array of rows or {\"random\": ...}, got " + Reader::kind(*mapv));
+  }
+  // --- start, goal
+  auto endpoint = [&](const char* key, const std::optional<grid::Cell>& fallback) {
+    const std::string ptr = std::string("/") + key;
+    grid::Cell c;
+    if (const Json* v = find(doc, key)) {
+      c = rd.cell(*v, ptr);
+    } else if (fallback) {
+      c = *fallback;
+    } else {
+      rd.fail(ptr, "missing (the map gives none)");
+    }
+    if (!s.grid.in_bounds(c)) rd.fail(ptr, "outside the map");
+    if (s.grid.blocked(c)) rd.fail(ptr, "on a blocked cell");
+    return c;
+  };
+  s.start = endpoint("start", map_start);
+  s.goal = endpoint("goal", map_goal);
+  if (const Json* v = find(doc, "policy")) {
+    try {
+      s.policy = grid::parse_corner_policy(rd.string(*v, "/policy"));
+    } catch (const UsageError&) {
+      rd.fail("/policy", "expected never, strict, one or always, got " + v->dump());
+    }
+  }
+  if (const Json* v = find(doc, "path")) {
+    if (!v->is_array() || v->empty() || v->size() > static_cast<std::size_t>(max_sim_cells))
+      rd.fail("/path", "expected a non-empty array of cells");
+    for (std::size_t i = 0; i < v->size(); ++i) s.path.push_back(rd.cell((*v)[i], "/path/" + std::to_string(i)));
+  }
+  if (const Json* v = find(doc, "planner")) {
+    if (v->is_string()) {
+      s.planner = v->get<std::string>();
+    } else {
+      rd.keys(*v, "/planner", {"name", "params"});
+      const Json* n = find(*v, "name");
+      if (n == nullptr) rd.fail("/planner/name", "missing");
+      s.planner = rd.string(*n, "/planner/name");
+      if (const Json* p = find(*v, "params")) {
+        if (!p->is_object()) rd.fail("/planner/params", "expected an object, got " + Reader::kind(*p));
+        s.planner_params = *p;
+      }
+    }
+  }
+  if (const Json* v = find(doc, "seed")) s.seed = static_cast<std::uint32_t>(rd.integer(*v, "/seed", 0, 4294967295LL));
+  if (const Json* v = find(doc, "dt")) s.dt = rd.number(*v, "/dt", 1.0 / 1024.0, 1.0, false);
+  if (const Json* v = find(doc, "horizon")) s.horizon = rd.number(*v, "/horizon", 0.0, 100.0, true);
+  if (const Json* v = find(doc, "robot")) {
+    rd.keys(*v, "/robot", {"radius", "speed", "accel"});
+    if (const Json* r = find(*v, "radius")) s.robot_radius = rd.number(*r, "/robot/radius", 0.0, 10.0, true);
+    if (const Json* r = find(*v, "speed")) s.speed = rd.number(*r, "/robot/speed", 0.0, 100.0, true);
+    if (const Json* r = find(*v, "accel")) s.accel = rd.number(*r, "/robot/accel", 0.0, 100.0, true);
+  }
+  if (const Json* v = find(doc, "margin")) s.margin = rd.number(*v, "/margin", 0.0, 10.0, false);
+  if (const Json* v = find(doc, "noise")) s.noise = rd.number(*v, "/noise", 0.0, 10.0, false);
+  if (const Json* v = find(doc, "t_max")) s.t_max = rd.number(*v, "/t_max", 0.0, 100000.0, true);
+  if (const Json* v = find(doc, "lambda")) s.lambda = rd.number(*v, "/lambda", 0.0, 1.0, true);
+  if (const Json* v = find(doc, "frontal_cos")) s.frontal_cos = rd.number(*v, "/frontal_cos", -1.0, 1.0, false);
+  if (std::ceil(s.t_max / s.dt) > static_cast<double>(max_sim_steps))
+    rd.fail("/t_max", "t_max / dt must not exceed " + std::to_string(max_sim_steps) + " steps");
+  if (const Json* v = find(doc, "obstacles")) {
+    if (!v->is_array()) rd.fail("/obstacles", "expected an array, got " + Reader::kind(*v));
+    if (v->size() > max_sim_obstacles)
+      rd.fail("/obstacles", "at most " + std::to_string(max_sim_obstacles) + " obstacles, got " + std::to_string(v->size()));
+    for (std::size_t i = 0; i < v->size(); ++i) {
+      const std::string ptr = "/obstacles/" + std::to_string(i);
+      const Json& o = (*v)[i];
+      rd.keys(o, ptr, {"position", "velocity", "radius"});
+      MovingObstacle m;
+      for (const char* k : {"position", "velocity"})
+        if (find(o, k) == nullptr) rd.fail(ptr + "/" + k, "missing (expected [x, y])");
+      m.position = rd.point(o.at("position"), ptr + "/position", 1e6);
+      m.velocity = rd.point(o.at("velocity"), ptr + "/velocity", 100.0);
+      if (const Json* r = find(o, "radius")) m.radius = rd.number(*r, ptr + "/radius", 0.0, 10.0, true);
+      s.obstacles.push_back(m);
+    }
+  }
+  return s;
+}
+
+Scenario parse_scenario(std::string_view text, std::string_view file, const std::string& base_dir) {
+  Json doc;
+  try {
+    doc = Json::parse(text.begin(), text.end());
+  } catch (const Json::parse_error& e) {
+    std::size_t line = 1, col = 1;
+    const std::size_t at = e.byte == 0 ? 0 : e.byte - 1;
+    for (std::size_t i = 0; i < at && i < text.size(); ++i) {
+      if (text[i] == '\n') {
+        ++line;
+        col = 1;
+      } else {
+        ++col;
+      }
+    }
+    throw ParseError(std::string(file), line, col, "invalid JSON (" + std::string(e.what()) + ")");
+  }
+  return scenario_from_json(doc, file, base_dir);
+}
+
+// ---------------------------------------------------------------------------------------------
+// The run
+
+std::string_view to_string(RobotState s) noexcept {
+  switch (s) {
+    case RobotState::move: return "move";
+    case RobotState::wait: return "wait";
+    case RobotState::arrive: return "arrive";
+  }
+  return "move";
+}
+
+namespace {
+
+double path_length(const std::vector<grid::Cell>& p) {
+  double len = 0.0;
+  for (std::size_t i = 1; i < p.size(); ++i) len += grid::step_cost(p[i - 1], p[i]);
+  return len;
+}
+
+/// The robot's plan: cells (adjacent), the global index of each (-1 on a detour), and where the
+/// robot is: on the piece seg -> seg+1 at arc offset off (0 <= off < piece length).
+struct Plan {
+  std::vector<grid::Cell> cells;
+  std::vector<std::int64_t> gidx;
+  std::size_t seg = 0;
+  double off = 0.0;
+
+  [[nodiscard]] bool at_end() const { return seg + 1 >= cells.size(); }
+  [[nodiscard]] double piece(std::size_t i) const { return grid::step_cost(cells[i], cells[i + 1]); }
+  [[nodiscard]] Vec2 at(std::size_t i, double f) const {
+    const Vec2 a = centre(cells[i]);
+    if (f == 0.0) return a;
+    const Vec2 b = centre(cells[i + 1]);
+    const double r = f / piece(i);
+    return Vec2{a.x + (r * (b.x - a.x)), a.y + (r * (b.y - a.y))};
+  }
+  [[nodiscard]] Vec2 position() const { return at_end() ? centre(cells.back()) : at(seg, off); }
+  [[nodiscard]] double remaining() const {
+    if (at_end()) return 0.0;
+    double r = piece(seg) - off;
+    for (std::size_t j = seg + 1; j + 1 < cells.size(); ++j) r += piece(j);
+    return r;
+  }
+  /// han.sim.step: the polyline from the robot over arc length L (truncated at the goal).
+  [[nodiscard]] std::vector<Vec2> lookahead(double L) const {
+    std::vector<Vec2> pts{position()};
+    if (at_end()) return pts;
+    double acc = piece(seg) - off;
+    if (acc >= L) {
+      pts.push_back(at(seg, off + L));
+      return pts;
+    }
+    pts.push_back(centre(cells[seg + 1]));
+    for (std::size_t j = seg + 1; j + 1 < cells.size(); ++j) {
+      const double len = piece(j);
+      if (acc + len >= L) {
+        pts.push_back(at(j, L - acc));
+        return pts;
+      }
+      acc += len;
+      pts.push_back(centre(cells[j + 1]));
+    }
+    return pts;
+  }
+  void advance(double ds) {
+    while (ds > 0.0 && !at_end()) {
+      const double r = piece(seg) - off;
+      if (ds < r) {
+        off += ds;
+        ds = 0.0;
+      } else {
+        ds -= r;
+        ++seg;
+        off = 0.0;
+      }
+    }
+  }
+};
+
+struct Tracker {
+  std::int64_t samples = 0;
+  double t0 = 0.0, x0 = 0.0, y0 = 0.0;
+  rls::Estimate est;
+};
+
+Vec2 true_position(const MovingObstacle& o, double t) {
+  return Vec2{o.position.x + (o.velocity.x * t), o.position.y + (o.velocity.y * t)};
+}
+
+/// Distance at closest approach of two points moving linearly over one step (relative motion).
+double closest_approach(Vec2 p0, Vec2 p1, Vec2 o0, Vec2 o1) {
+  const Vec2 d0{p0.x - o0.x, p0.y - o0.y};
+  const Vec2 d1{p1.x - o1.x, p1.y - o1.y};
+  return point_segment_distance(Vec2{0.0, 0.0}, d0, d1);
+}
+
+}  // namespace
+
+GlobalPath global_path(const Scenario& s) {
+  require(s.grid.in_bounds(s.start) && s.grid.free(s.start), "simulate: start must be a free cell of the map");
+  require(s.grid.in_bounds(s.goal) && s.grid.free(s.goal), "simulate: goal must be a free cell of the map");
+  GlobalPath out;
+  if (!s.path.empty()) {
+    require(s.path.front() == s.start && s.path.back() == s.goal,
+            "simulate: the given path must run from start to goal");
+    for (std::size_t i = 1; i < s.path.size(); ++i)
+      require(grid::step_allowed(s.grid, s.path[i - 1], s.path[i], s.policy),
+              "simulate: the given path has a step not allowed under the corner policy (step " +
+                  std::to_string(i) + ")");
+    out.found = true;
+    out.path = s.path;
+    out.length = path_length(s.path);
+    return out;
+  }
+  const planners::Planner* p = planners::find_planner(s.planner);
+  if (p == nullptr) throw UsageError("simulate: unknown planner '" + s.planner + "' for the global path");
+  planners::Request req;
+  req.grid = &s.grid;
+  req.start = s.start;
+  req.goal = s.goal;
+  req.policy = s.policy;
+  req.seed = s.seed;
+  req.params = s.planner_params;
+  const planners::Result r = p->run(req);
+  out.found = r.found;
+  out.path = r.path;
+  out.length = r.found ? path_length(r.path) : 0.0;
+  return out;
+}
+
+SimResult simulate(const Scenario& s) {
+  require(std::isfinite(s.dt) && s.dt > 0.0, "simulate: dt must be > 0");
+  require(std::isfinite(s.horizon) && s.horizon > 0.0, "simulate: horizon must be > 0");
+  require(std::isfinite(s.t_max) && s.t_max > 0.0, "simulate: t_max must be > 0");
+  require(std::ceil(s.t_max / s.dt) <= static_cast<double>(max_sim_steps), "simulate: too many steps");
+  require(s.robot_radius > 0.0 && s.margin >= 0.0 && s.noise >= 0.0, "simulate: bad radius, margin or noise");
+  require(s.obstacles.size() <= max_sim_obstacles, "simulate: too many obstacles");
+  SimResult res;
+  const GlobalPath gp = global_path(s);
+  res.global_found = gp.found;
+  res.global_path = gp.path;
+  res.global_length = gp.length;
+  if (!gp.found) return res;
+
+  Plan plan;
+  plan.cells = gp.path;
+  for (std::size_t i = 0; i < gp.path.size(); ++i) plan.gidx.push_back(static_cast<std::int64_t>(i));
+  const std::size_t n_obs = s.obstacles.size();
+  std::vector<Tracker> trackers(n_obs);
+  res.obstacle_tracks.assign(n_obs, {});
+  rng::Stream noise_stream(s.seed);
+  const double look = s.speed * s.horizon;
+  double v = 0.0;
+  bool waiting = false;
+  Wait current_wait;
+
+  auto record = [&](double t, RobotState st) {
+    res.trajectory.push_back(Sample{t, plan.position(), v, st});
+    for (std::size_t o = 0; o < n_obs; ++o) res.obstacle_tracks[o].push_back(true_position(s.obstacles[o], t));
+  };
+
+  if (plan.at_end()) {
+    res.reached_goal = true;
+    record(0.0, RobotState::arrive);
+    return res;
+  }
+
+  for (std::int64_t k = 0;; ++k) {
+    const double t = static_cast<double>(k) * s.dt;
+    if (t >= s.t_max) {
+      res.time = t;
+      if (waiting) {
+        current_wait.end = t;
+        res.waits.push_back(current_wait);
+        res.wait_time += t - current_wait.start;
+      }
+      break;
+    }
+    // 1. observe (and draw the noise) -------------------------------------------------------
+    for (std::size_t o = 0; o < n_obs; ++o) {
+      Vec2 z = true_position(s.obstacles[o], t);
+      if (s.noise > 0.0) {
+        const double ux = noise_stream.next_double();
+        const double uy = noise_stream.next_double();
+        z.x = z.x + (((2.0 * ux) - 1.0) * s.noise);
+        z.y = z.y + (((2.0 * uy) - 1.0) * s.noise);
+      }
+      Tracker& tr = trackers[o];
+      ++tr.samples;
+      if (tr.samples == 1) {
+        tr.t0 = t;
+        tr.x0 = z.x;
+        tr.y0 = z.y;
+      } else if (tr.samples == 2) {
+        const double ts[2] = {0.0, t - tr.t0};
+        const double xs[2] = {tr.x0, z.x};
+        const double ys[2] = {tr.y0, z.y};
+        tr.est = rls::rls_init(ts, xs, ys, s.lambda);
+      } else {
+        tr.est = rls::rls_step(tr.est, t - tr.t0, z.x, z.y, s.lambda);
+      }
+    }
+    // 2. classify every predicted obstacle against the lookahead ------------------------------
+    const std::vector<Vec2> ahead = plan.lookahead(look);
+    std::vector<std::int64_t> frontal, side, conflicting;
+    std::vector<std::pair<Vec2, Vec2>> predicted(n_obs);
+    bool inside = false;  // the robot is on the future path of a conflicting obstacle
+    for (std::size_t o = 0; o < n_obs; ++o) {
+      const Tracker& tr = trackers[o];
+      if (tr.samples < 2) continue;
+      const rls::LinearMotion m{tr.est.A(0), tr.est.A(1), tr.est.B(0), tr.est.B(1)};
+      const rls::Position a = rls::position(m, t - tr.t0);
+      const rls::Position b = rls::position(m, (t - tr.t0) + s.horizon);
+      predicted[o] = {Vec2{a.x, a.y}, Vec2{b.x, b.y}};
+      const double clearance = (s.robot_radius + s.obstacles[o].radius) + s.margin;
+      const Classification c = classify(ahead, predicted[o].first, predicted[o].second, clearance, s.frontal_cos);
+      const auto id = static_cast<std::int64_t>(o);
+      if (c.kind == Encounter::none) continue;
+      (c.kind == Encounter::frontal ? frontal : side).push_back(id);
+      conflicting.push_back(id);
+      inside = inside || c.robot_inside;
+    }
+    // 3. decide --------------------------------------------------------------------------------
+    bool wait_now = false;
+    if (!frontal.empty()) {
+      ++res.frontal_decisions;
+      bool replanned = false;
+      const std::size_t ps = plan.off > 0.0 ? plan.seg + 1 : plan.seg;
+      const grid::Cell from_cell = plan.cells[ps];
+      std::int64_t from = -1;
+      for (std::size_t i = ps; i < plan.cells.size() && from < 0; ++i) from = plan.gidx[i];
+      grid::Grid blocked = s.grid;
+      std::vector<std::uint8_t> flags(gp.path.size(), 0);
+      for (const std::int64_t o : conflicting) {
+        const auto uo = static_cast<std::size_t>(o);
+        const double clearance = (s.robot_radius + s.obstacles[uo].radius) + s.margin;
+        for (const grid::Cell c : swept_cells(s.grid, predicted[uo].first, predicted[uo].second, clearance))
+          blocked.set_blocked(c, true);
+      }
+      for (std::size_t i = 0; i < gp.path.size(); ++i) flags[i] = blocked.blocked(gp.path[i]) ? 1 : 0;
+      const std::int64_t target = from >= 0 ? local_target(flags, from) : -1;
+      if (target >= 0 && !blocked.blocked(from_cell)) {
+        const grid::Cell tcell = gp.path[static_cast<std::size_t>(target)];
+        if (!(tcell == from_cell)) {
+          const search::Outcome a = search::astar(blocked, from_cell, tcell, s.policy, heuristics::Heuristic::chebyshev);
+          if (a.found) {
+            Plan np;
+            if (plan.off > 0.0) {
+              np.cells.push_back(plan.cells[plan.seg]);
+              np.gidx.push_back(plan.gidx[plan.seg]);
+            }
+            for (std::size_t i = 0; i + 1 < a.path.size(); ++i) {
+              np.cells.push_back(a.path[i]);
+              np.gidx.push_back(-1);
+            }
+            for (std::size_t i = static_cast<std::size_t>(target); i < gp.path.size(); ++i) {
+              np.cells.push_back(gp.path[i]);
+              np.gidx.push_back(static_cast<std::int64_t>(i));
+            }
+            np.seg = 0;
+            np.off = plan.off;
+            plan = std::move(np);
+            res.replans.push_back(Replan{t, from_cell, tcell, target, a.path, frontal});
+            replanned = true;
+          }
+        }
+      }
+      wait_now = !replanned && !inside;
+    } else if (!side.empty()) {
+      wait_now = !inside;
+    }
+    // 4. act -----------------------------------------------------------------------------------
+    const Vec2 p0 = plan.position();
+    if (wait_now) {
+      if (!waiting) {
+        waiting = true;
+        current_wait = Wait{t, t, conflicting};
+      }
+      ++res.wait_steps;
+      v = 0.0;
+      record(t, RobotState::wait);
+      const double t1 = static_cast<double>(k + 1) * s.dt;
+      for (std::size_t o = 0; o < n_obs; ++o) {
+        const double d = closest_approach(p0, p0, true_position(s.obstacles[o], t), true_position(s.obstacles[o], t1));
+        if (d < s.robot_radius + s.obstacles[o].radius) res.collisions.push_back(Collision{t, static_cast<std::int64_t>(o), d});
+      }
+      continue;
+    }
+    if (waiting) {
+      waiting = false;
+      current_wait.end = t;
+      res.waits.push_back(current_wait);
+      res.wait_time += t - current_wait.start;
+    }
+    record(t, RobotState::move);
+    const MotionStep m = motion_step(v, s.dt, s.speed, s.accel, plan.remaining());
+    plan.advance(m.distance);
+    if (m.arrived) {
+      plan.seg = plan.cells.size() - 1;
+      plan.off = 0.0;
+    }
+    res.distance += m.distance;
+    v = m.v_end;
+    const double t1 = t + m.time;
+    const Vec2 p1 = plan.position();
+    for (std::size_t o = 0; o < n_obs; ++o) {
+      const double d = closest_approach(p0, p1, true_position(s.obstacles[o], t), true_position(s.obstacles[o], t1));
+      if (d < s.robot_radius + s.obstacles[o].radius) res.collisions.push_back(Collision{t, static_cast<std::int64_t>(o), d});
+    }
+    if (m.arrived) {
+      res.reached_goal = true;
+      res.time = t1;
+      record(t1, RobotState::arrive);
+      res.steps = k + 1;
+      break;
+    }
+  }
+  if (!res.reached_goal) res.steps = static_cast<std::int64_t>(std::ceil(res.time / s.dt));
+  res.noise_draws = static_cast<std::int64_t>(noise_stream.doubles_drawn());
+  for (const Tracker& tr : trackers)
+    res.estimates.push_back(tr.samples >= 2 ? std::vector<double>{tr.est.A(0), tr.est.A(1), tr.est.B(0), tr.est.B(1)}
+                                            : std::vector<double>{0.0, 0.0, 0.0, 0.0});
+  return res;
+}
+
+Json to_json(const SimResult& r, bool full) {
+  auto pt = [](Vec2 p) { return Json::array({p.x, p.y}); };
+  auto ids = [](const std::vector<std::int64_t>& v) {
+    Json a = Json::array();
+    for (const auto i : v) a.push_back(i);
+    return a;
+  };
+  Json waits = Json::array();
+  for (const Wait& w : r.waits)
+    waits.push_back({{"start", w.start}, {"end", w.end}, {"duration", w.end - w.start}, {"obstacles", ids(w.obstacles)}});
+  Json replans = Json::array();
+  for (const Replan& p : r.replans)
+    replans.push_back({{"t", p.t}, {"from", grid::cell_to_json(p.from)}, {"target", grid::cell_to_json(p.target)},
+                       {"target_index", p.target_index}, {"detour", grid::path_to_json(p.detour)},
+                       {"obstacles", ids(p.obstacles)}});
+  Json cols = Json::array();
+  for (const Collision& c : r.collisions) cols.push_back({{"t", c.t}, {"obstacle", c.obstacle}, {"distance", c.distance}});
+  Json out{{"format", "pathref-sim-result"},
+           {"global_found", r.global_found},
+           {"global_path", grid::path_to_json(r.global_path)},
+           {"global_length", r.global_length},
+           {"reached_goal", r.reached_goal},
+           {"collided", !r.collisions.empty()},
+           {"collisions", cols},
+           {"time", r.time},
+           {"distance", r.distance},
+           {"wait_time", r.wait_time},
+           {"waits", waits},
+           {"replans", replans},
+           {"steps", r.steps},
+           {"noise_draws", r.noise_draws},
+           {"estimates", r.estimates}};
+  if (full) {
+    Json traj = Json::array();
+    for (const Sample& s : r.trajectory) traj.push_back(Json::array({s.t, s.p.x, s.p.y, s.v, std::string(to_string(s.state))}));
+    out["trajectory"] = traj;
+    Json tracks = Json::array();
+    for (const auto& tr : r.obstacle_tracks) {
+      Json a = Json::array();
+      for (const Vec2 p : tr) a.push_back(pt(p));
+      tracks.push_back(a);
+    }
+    out["obstacle_tracks"] = tracks;
+  }
+  return out;
+}
+
+}  // namespace pathref::sim

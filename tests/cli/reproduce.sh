@@ -1,0 +1,156 @@
+#!/usr/bin/env bash
+# `pathref reproduce` (spec/reproduce.md): bad input is exit 2 with a clear message; `--quick` runs of
+# both protocols write the report, its JSON and figures, the JSON parses, and every number of the
+# markdown's tables equals the JSON's. shi2022 needs the shared MATLAB maps (../shared/data/matlab-maps)
+# and is skipped with a message when they are absent.
+# Usage: bash tests/cli/reproduce.sh path/to/pathref   (from the repository root)
+set -euo pipefail
+pathref=$1
+tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
+
+expect_exit() {
+  local want=$1 msg=$2; shift 2
+  set +e; "$pathref" "$@" >"$tmp/out" 2>"$tmp/err"; local got=$?; set -e
+  if [ "$got" != "$want" ]; then
+    echo "FAIL: pathref $* exited $got, expected $want"; cat "$tmp/out" "$tmp/err"; exit 1
+  fi
+  [ -z "$msg" ] || grep -qF -- "$msg" "$tmp/err" || { echo "FAIL: pathref $*: stderr lacks '$msg':"; cat "$tmp/err"; exit 1; }
+}
+
+# ---- --help ---------------------------------------------------------------------------------------
+"$pathref" --help | grep -qF reproduce || { echo "FAIL: pathref --help lacks reproduce"; exit 1; }
+"$pathref" reproduce --help | grep -qF shi2022 || { echo "FAIL: reproduce --help lacks shi2022"; exit 1; }
+for w in --simple --complex --runs --seed --out-dir --policy --quick; do
+  "$pathref" reproduce shi2022 --help | grep -qF -- "$w" || { echo "FAIL: reproduce shi2022 --help lacks $w"; exit 1; }
+done
+for w in --runs --sweep-runs --maps-per-edge --edges --seed --out-dir --quick; do
+  "$pathref" reproduce han --help | grep -qF -- "$w" || { echo "FAIL: reproduce han --help lacks $w"; exit 1; }
+done
+
+# ---- bad input (no shared data needed) ---------------------------------------------------------
+printf '0 0 0\n0 0 0\n0 0 0\n' >"$tmp/free.txt"
+printf '1 0 0\n0 0 0\n0 0 0\n' >"$tmp/blocked.txt"
+printf '0 0 0\n0 0 0\n0 0 1\n' >"$tmp/goal.txt"
+expect_exit 2 "" reproduce
+expect_exit 2 "--complex is required" reproduce shi2022 --simple "$tmp/free.txt"
+expect_exit 2 "cannot read map file '$tmp/missing.txt'" reproduce shi2022 --simple "$tmp/missing.txt" --complex "$tmp/free.txt" --out-dir "$tmp/o"
+expect_exit 2 "--runs expects a decimal integer from 1 to 10000, got '0'" reproduce shi2022 --simple "$tmp/free.txt" --complex "$tmp/free.txt" --runs 0 --out-dir "$tmp/o"
+expect_exit 2 "--runs expects a decimal integer from 1 to 10000, got 'x'" reproduce han --runs x --out-dir "$tmp/o"
+expect_exit 2 "--runs expects a decimal integer from 1 to 10000, got '-3'" reproduce han --runs=-3 --out-dir "$tmp/o"
+expect_exit 2 "--seed expects a decimal integer from 0 to 4294967295, got '4294967296'" reproduce han --seed 4294967296 --out-dir "$tmp/o"
+expect_exit 2 "--seed + --runs - 1 must not exceed 4294967295" reproduce shi2022 --simple "$tmp/free.txt" --complex "$tmp/free.txt" --seed 4294967295 --runs 2 --out-dir "$tmp/o"
+expect_exit 2 "--orientation: up not in {paper,file}" reproduce shi2022 --simple "$tmp/free.txt" --complex "$tmp/free.txt" --orientation up --out-dir "$tmp/o"
+expect_exit 2 "--edges expects a decimal integer from 2 to 1000, got 'y'" reproduce han --edges 10,y --out-dir "$tmp/o"
+expect_exit 2 "start (0, 0) is a blocked cell of the simple map '$tmp/blocked.txt'" reproduce shi2022 --simple "$tmp/blocked.txt" --complex "$tmp/free.txt" --out-dir "$tmp/o"
+expect_exit 2 "goal (2, 2) is a blocked cell of the complex map '$tmp/goal.txt'" reproduce shi2022 --simple "$tmp/free.txt" --complex "$tmp/goal.txt" --out-dir "$tmp/o"
+[ ! -e "$tmp/o" ] || { echo "FAIL: a failed reproduce wrote $tmp/o"; exit 1; }
+
+# ---- the markdown's numbers are the JSON's --------------------------------------------------------
+check_report() {  # paper out-dir
+  python3 - "$1" "$2" <<'PY'
+import json, re, sys
+paper, out = sys.argv[1], sys.argv[2]
+doc = json.load(open(f"{out}/{paper}/reproduce.json"))
+md = open(f"{out}/{paper}.md").read()
+assert doc["format"] == "pathref-reproduce" and doc["format_version"] == 1 and doc["paper"] == paper, doc.keys()
+assert doc["protocol"]["quick"] is True
+assert "QUICK RUN" in md
+for key in ("command", "build_type", "date_utc", "machine"):
+    assert doc["provenance"][key], key
+    assert str(doc["provenance"][key]) in md, key
+
+def fx(v, d):
+    return "—" if v is None else format(v, f".{d}f")
+
+def table(marker):
+    i = md.index(f"<!-- results:{marker} -->")
+    rows = []
+    for line in md[i:].splitlines()[3:]:
+        if not line.startswith("|"):
+            break
+        rows.append([c.strip() for c in line.strip().strip("|").split("|")])
+    return rows
+
+checked = 0
+if paper == "shi2022":
+    for key in ("simple", "complex", "shi6x6"):
+        res = doc["results"][key]
+        rows = table(key)
+        assert sorted(r[0] for r in rows) == sorted(f"`{n}`" for n in res), (key, [r[0] for r in rows])
+        for r in rows:
+            series = res[r[0].strip("`")]
+            if not series["available"]:
+                assert r[1] == "not available in this build", r
+                continue
+            s = series["summary"]
+            want = [str(s["runs"]), str(s["found"]), str(s["valid"]),
+                    fx(s["length"]["min"], 4), fx(s["length"]["mean"], 4), fx(s["length"]["std"], 4),
+                    fx(s["turns"]["mean"], 2), fx(s["turns"]["std"], 2), fx(s["turns"]["min"], 0),
+                    fx(s["converged_at"]["mean"], 2), fx(s["converged_at"]["std"], 2),
+                    fx(s["converged_at_whole_curve"]["mean"], 2), fx(s["drive_time_s"]["mean"], 2),
+                    fx(s["wall_ms"]["mean"], 1)]
+            assert r[1:] == want, (key, r, want)
+            # the summary is the runs' statistics
+            lengths = [x["length"] for x in series["runs"] if x["found"]]
+            assert s["found"] == len(lengths)
+            if lengths:
+                assert s["length"]["min"] == min(lengths)
+                assert abs(s["length"]["mean"] - sum(lengths) / len(lengths)) < 1e-9
+            checked += 1
+    # the maps' optima (protocol check M.1, M.2) are the Shi optima on the shared maps
+    assert abs(doc["results"]["simple"]["dijkstra"]["summary"]["length"]["min"] - (10 + 14 * 2 ** 0.5)) < 1e-12
+    assert abs(doc["results"]["complex"]["dijkstra"]["summary"]["length"]["min"] - (16 + 11 * 2 ** 0.5)) < 1e-12
+    assert doc["maps"]["simple"]["start"] == [0, 0] and doc["maps"]["simple"]["goal"] == [19, 19]
+    assert doc["maps"]["simple"]["orientation"] == "paper"
+else:
+    rows = table("edges")
+    assert len(rows) == len(doc["edges"]) == 2, rows
+    for r, e in zip(rows, doc["edges"]):
+        v = e["variants"]
+        f = lambda k: f'{v[k]["found"]}/{v[k]["runs"]}'
+        want = [str(e["edge"]), fx(v["iaco-han"]["min_length"], 4), fx(v["aco"]["min_length"], 4),
+                fx(v["astar-han"]["min_length"], 4), fx(v["iaco-han"]["travel_time_s"], 2),
+                fx(v["aco"]["travel_time_s"], 2), f("iaco-han"), f("aco"), f("iaco-han@die"), f("aco@die"),
+                fx(v["iaco-han"]["converged_at"], 2), fx(v["aco"]["converged_at"], 2),
+                fx(v["iaco-han"]["wall_ms"], 1), fx(v["aco"]["wall_ms"], 1),
+                fx(v["iaco-han:goal"]["min_length"], 4), fx(v["iaco-han:goal"]["converged_at"], 2)]
+        assert r == want, (r, want)
+        checked += 1
+    for m in doc["maps"]:
+        assert m["edge"] in (10, 15) and len(m["rows"]) == m["edge"]
+# the claims table: one row per claim, the same 'paper', 'pathref' and verdict text
+i = md.index("## Claims")
+claim_rows = [[c.strip() for c in l.strip().strip("|").split("|")] for l in md[i:].splitlines() if l.startswith("| ") and not l.startswith("| id") and not l.startswith("| ---")]
+assert len(claim_rows) == len(doc["claims"]) > 0, (len(claim_rows), len(doc["claims"]))
+for r, c in zip(claim_rows, doc["claims"]):
+    assert r[0] == c["id"] and r[3] == c["paper"] and r[4] == c["ours"], (r, c)
+    assert r[5].strip("*") == c["verdict"], (r, c)
+    assert c["verdict"] in ("holds", "does not hold", "cannot be tested")
+print(f"{paper}: {checked} result rows and {len(doc['claims'])} claims agree")
+PY
+}
+
+# ---- han --quick (generated maps: no shared data needed) ----------------------------------------
+expect_exit 0 "" reproduce han --quick --out-dir "$tmp/r"
+grep -qF "wrote $tmp/r/han.md" "$tmp/out" || { echo "FAIL: no 'wrote' line for han.md"; cat "$tmp/out"; exit 1; }
+grep -qF "[reproduce] han edge 10 map 1" "$tmp/err" || { echo "FAIL: no progress on stderr"; cat "$tmp/err"; exit 1; }
+for f in han.md han/reproduce.json han/length-vs-edge.svg han/time-vs-edge.svg han/convergence-10m.svg han/paths-10m.svg; do
+  [ -s "$tmp/r/$f" ] || { echo "FAIL: $f not written"; exit 1; }
+done
+check_report han "$tmp/r"
+
+# ---- shi2022 --quick on the shared maps ----------------------------------------------------------
+maps=../shared/data/matlab-maps
+if [ ! -d "$maps" ]; then
+  echo "skipped: $maps is absent (the shared MATLAB maps); shi2022 --quick not run"
+  exit 0
+fi
+expect_exit 0 "" reproduce shi2022 --quick --simple "$maps/mapC_20x20_winsleo_traditional.txt" \
+  --complex "$maps/mapB_20x20_ga.txt" --out-dir "$tmp/r" --seed 5
+for f in shi2022.md shi2022/reproduce.json shi2022/simple-paths.svg shi2022/complex-paths.svg \
+         shi2022/simple-convergence.svg shi2022/complex-convergence.svg shi2022/trial-error.svg; do
+  [ -s "$tmp/r/$f" ] || { echo "FAIL: $f not written"; exit 1; }
+done
+python3 -c "import json,sys; d=json.load(open(sys.argv[1])); assert d['protocol']['seeds']==[5,7], d['protocol']" "$tmp/r/shi2022/reproduce.json"
+check_report shi2022 "$tmp/r"
+echo "ok"

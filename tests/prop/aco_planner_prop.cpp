@@ -1,0 +1,278 @@
+// spec: shi2022.plan.aco, shi2022.plan.iaco, han.plan.iaco, han.plan.astar
+#include <catch2/catch.hpp>
+#include <rapidcheck/catch.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <deque>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "pathref/equations/aco.hpp"
+#include "pathref/equations/aco_adaptive.hpp"
+#include "pathref/equations/metrics.hpp"
+#include "pathref/planners/ant_colony.hpp"
+#include "pathref/planners/planner.hpp"
+#include "pathref/planners/search.hpp"
+#include "support/generators.hpp"
+
+using namespace pathref;
+using grid::Cell;
+using grid::CornerPolicy;
+using grid::Grid;
+
+namespace {
+
+const std::vector<std::string> colony_algos = {"aco", "iaco-shi", "iaco-shi-nomin", "iaco-han"};
+
+/// A small map with a free start and goal (freed after drawing: no rejection), a policy, a
+/// seed, one colony planner and reduced ants / iterations so that a property stays fast.
+struct Scenario {
+  Grid g{1, 1};
+  Cell start;
+  Cell goal;
+  CornerPolicy policy = CornerPolicy::strict;
+  std::uint32_t seed = 1;
+  std::string algo;
+  planners::Json params;
+};
+
+Scenario gen_scenario() {
+  Scenario sc;
+  sc.g = *testing::gen_grid(8, 8, 0.4);
+  const auto n = sc.g.cell_count();
+  sc.start = sc.g.cell(*rc::gen::inRange<std::int64_t>(0, n));
+  sc.goal = sc.g.cell(*rc::gen::inRange<std::int64_t>(0, n));
+  sc.g.set_blocked(sc.start, false);
+  sc.g.set_blocked(sc.goal, false);
+  sc.policy = *testing::gen_policy();
+  sc.seed = *rc::gen::arbitrary<std::uint32_t>();
+  sc.algo = *rc::gen::elementOf(colony_algos);
+  sc.params = planners::Json{{"ants", *rc::gen::inRange<std::int64_t>(1, 6)},
+                             {"iterations", *rc::gen::inRange<std::int64_t>(1, 6)},
+                             {"dead_end", *rc::gen::element<std::string>("die", "backtrack")}};
+  return sc;
+}
+
+planners::Result plan(const Scenario& sc, const std::string& algo, const planners::Json& params) {
+  planners::Request req;
+  req.grid = &sc.g;
+  req.start = sc.start;
+  req.goal = sc.goal;
+  req.policy = sc.policy;
+  req.seed = sc.seed;
+  req.params = params;
+  const planners::Planner* p = planners::find_planner(algo);
+  RC_ASSERT(p != nullptr);
+  return p->run(req);
+}
+
+/// Exact comparison of a + b*sqrt2 >= c + d*sqrt2 for integers (no rounding anywhere):
+/// (a - c) >= (d - b) * sqrt2.
+bool ge_exact(std::int64_t a, std::int64_t b, std::int64_t c, std::int64_t d) {
+  const std::int64_t p = a - c;
+  const std::int64_t q = d - b;
+  if (q <= 0) return p >= 0 || p * p <= 2 * q * q;
+  return p >= 0 && p * p >= 2 * q * q;
+}
+
+/// Reachability by breadth-first search written here from grid.corner-policy.
+bool reachable(const Grid& g, Cell s, Cell t, CornerPolicy p) {
+  std::vector<bool> seen(static_cast<std::size_t>(g.cell_count()), false);
+  std::deque<Cell> q{s};
+  seen[static_cast<std::size_t>(g.index(s))] = true;
+  while (!q.empty()) {
+    const Cell c = q.front();
+    q.pop_front();
+    if (c == t) return true;
+    for (std::int64_t dy = -1; dy <= 1; ++dy)
+      for (std::int64_t dx = -1; dx <= 1; ++dx) {
+        const Cell m{c.x + dx, c.y + dy};
+        if (!grid::step_allowed(g, c, m, p)) continue;
+        const auto i = static_cast<std::size_t>(g.index(m));
+        if (!seen[i]) {
+          seen[i] = true;
+          q.push_back(m);
+        }
+      }
+  }
+  return false;
+}
+
+}  // namespace
+
+TEST_CASE("prop_aco_paths_valid_and_not_shorter_than_dijkstra", "[aco][prop]") {
+  rc::prop("found paths are valid, simple, length == metrics.length, >= the Dijkstra optimum", [] {
+    const Scenario sc = gen_scenario();
+    const planners::Result r = plan(sc, sc.algo, sc.params);
+    const bool reach = reachable(sc.g, sc.start, sc.goal, sc.policy);
+    if (!reach) RC_ASSERT(!r.found);
+    if (!r.found) {
+      RC_ASSERT(r.path.empty());
+      return;
+    }
+    RC_ASSERT(metrics::validate_path(sc.g, r.path, sc.start, sc.goal, sc.policy).valid);
+    std::set<std::int64_t> cells;
+    for (const Cell& c : r.path) cells.insert(sc.g.index(c));
+    RC_ASSERT(cells.size() == r.path.size());
+    RC_ASSERT(r.length == metrics::path_length(r.path));
+    const search::Outcome d = search::dijkstra(sc.g, sc.start, sc.goal, sc.policy);
+    RC_ASSERT(d.found);
+    const auto a = search::step_counts(r.path);
+    const auto o = search::step_counts(d.path);
+    RC_ASSERT(ge_exact(a.orthogonal, a.diagonal, o.orthogonal, o.diagonal));
+  });
+}
+
+TEST_CASE("prop_aco_same_seed_same_run", "[aco][prop]") {
+  rc::prop("two runs with the same seed and parameters are identical, draw counts included", [] {
+    const Scenario sc = gen_scenario();
+    const planners::Result a = plan(sc, sc.algo, sc.params);
+    const planners::Result b = plan(sc, sc.algo, sc.params);
+    RC_ASSERT(a.found == b.found);
+    RC_ASSERT(a.path == b.path);
+    RC_ASSERT(a.length == b.length);
+    RC_ASSERT(a.params_used == b.params_used);
+    RC_ASSERT(a.extra.dump() == b.extra.dump());
+    RC_ASSERT(a.best_per_iteration == b.best_per_iteration);
+    const auto& ma = a.mean_per_iteration;
+    const auto& mb = b.mean_per_iteration;
+    RC_ASSERT(ma.size() == mb.size());
+    for (std::size_t i = 0; i < ma.size(); ++i)
+      RC_ASSERT((std::isnan(ma[i]) && std::isnan(mb[i])) || ma[i] == mb[i]);
+  });
+}
+
+TEST_CASE("prop_aco_best_curve_non_increasing", "[aco][prop]") {
+  rc::prop("best_per_iteration is non-increasing, ends at the returned length, N entries", [] {
+    const Scenario sc = gen_scenario();
+    const planners::Result r = plan(sc, sc.algo, sc.params);
+    if (sc.start == sc.goal) return;
+    const auto& b = r.best_per_iteration;
+    RC_ASSERT(static_cast<std::int64_t>(b.size()) == sc.params.at("iterations").get<std::int64_t>());
+    for (std::size_t i = 1; i < b.size(); ++i) RC_ASSERT(b[i] <= b[i - 1]);
+    if (r.found) {
+      RC_ASSERT(b.back() == r.length);
+      // the iteration best never beats the best so far, and the mean is not below it
+      const auto& it = r.extra.at("iteration_best");
+      for (std::size_t i = 0; i < b.size(); ++i)
+        if (!it[i].is_null()) {
+          RC_ASSERT(it[i].get<double>() >= b[i]);
+          // mean >= iteration best up to the rounding of the left-to-right sum and the division
+          // (k <= 5 ants: relative error below (k + 1) 2^-53)
+          RC_ASSERT(r.mean_per_iteration[i] >= it[i].get<double>() * (1.0 - 8.0 * 0x1p-53));
+        }
+    } else {
+      for (const double v : b) RC_ASSERT(std::isinf(v));
+    }
+  });
+}
+
+TEST_CASE("prop_backtracking_ants_never_die_when_goal_reachable", "[aco][prop]") {
+  rc::prop("dead_end = backtrack: a tour is a depth-first search, so it reaches a reachable goal", [] {
+    Scenario sc = gen_scenario();
+    sc.params["dead_end"] = "backtrack";
+    const planners::Result r = plan(sc, sc.algo, sc.params);
+    if (sc.start == sc.goal) return;
+    const bool reach = reachable(sc.g, sc.start, sc.goal, sc.policy);
+    for (const auto& d : r.extra.at("dead_ants_per_iteration"))
+      RC_ASSERT(d.get<std::int64_t>() == (reach ? 0 : sc.params.at("ants").get<std::int64_t>()));
+  });
+}
+
+TEST_CASE("prop_iaco_shi_rho_follows_eq13", "[aco][prop]") {
+  rc::prop("rho_per_iteration = iterated aco::adaptive_rho from rho_initial (shi2022.eq13)", [] {
+    Scenario sc = gen_scenario();
+    const bool nomin = *rc::gen::arbitrary<bool>();
+    const auto origin = *rc::gen::inRange<std::int64_t>(0, 2);
+    const auto N = *rc::gen::inRange<std::int64_t>(1, 12);
+    sc.params = planners::Json{{"ants", 1}, {"iterations", N}, {"rho_t_origin", origin}};
+    const planners::Result r = plan(sc, nomin ? "iaco-shi-nomin" : "iaco-shi", sc.params);
+    if (sc.start == sc.goal) return;
+    const double rho_min = nomin ? 0.0 : 0.1;
+    double rho = 0.9;
+    const auto& got = r.extra.at("rho_per_iteration");
+    RC_ASSERT(static_cast<std::int64_t>(got.size()) == N);
+    for (std::int64_t t = 1; t <= N; ++t) {
+      RC_ASSERT(got[static_cast<std::size_t>(t - 1)].get<double>() == rho);
+      rho = aco::adaptive_rho(rho, t - 1 + origin, N, rho_min);
+    }
+  });
+}
+
+TEST_CASE("prop_iaco_han_q0_and_rho_follow_eq5_eq7", "[aco][prop]") {
+  rc::prop("q0 per iteration = adaptive_q0; rho in [rho_min, 0.7], non-increasing", [] {
+    Scenario sc = gen_scenario();
+    sc.params.erase("dead_end");
+    const planners::Result r = plan(sc, "iaco-han", sc.params);
+    if (sc.start == sc.goal) return;
+    const auto N = sc.params.at("iterations").get<std::int64_t>();
+    const auto& q0 = r.extra.at("q0_per_iteration");
+    const auto& rho = r.extra.at("rho_per_iteration");
+    for (std::int64_t t = 1; t <= N; ++t) {
+      RC_ASSERT(q0[static_cast<std::size_t>(t - 1)].get<double>() == aco::adaptive_q0(1.0, t, N));
+      const double v = rho[static_cast<std::size_t>(t - 1)].get<double>();
+      RC_ASSERT(v >= 0.1);
+      RC_ASSERT(v <= 0.7);
+      if (t > 1) RC_ASSERT(v <= rho[static_cast<std::size_t>(t - 2)].get<double>());
+    }
+    RC_ASSERT(rho[0].get<double>() == 0.7);  // rho_timing = next: the printed rho(0) first
+  });
+}
+
+TEST_CASE("prop_distinct_paths_are_valid_and_contain_the_best", "[aco][prop]") {
+  rc::prop("ant_colony::run: distinct surviving paths, valid, counts sum to the survivors", [] {
+    const Scenario sc = gen_scenario();
+    planners::Request req;
+    req.grid = &sc.g;
+    req.start = sc.start;
+    req.goal = sc.goal;
+    req.policy = sc.policy;
+    ant_colony::Config cfg = ant_colony::shi_iaco();
+    cfg.ants = sc.params.at("ants").get<std::int64_t>();
+    cfg.iterations = sc.params.at("iterations").get<std::int64_t>();
+    rng::Stream stream(sc.seed);
+    const ant_colony::Run run = ant_colony::run(req, cfg, stream);
+    if (sc.start == sc.goal) return;
+    std::int64_t survivors = 0;
+    for (const auto& d : run.result.extra.at("dead_ants_per_iteration"))
+      survivors += cfg.ants - d.get<std::int64_t>();
+    std::int64_t counted = 0;
+    std::set<std::vector<std::int64_t>> seen;
+    bool has_best = false;
+    for (const auto& ap : run.distinct_paths) {
+      RC_ASSERT(metrics::validate_path(sc.g, ap.path, sc.start, sc.goal, sc.policy).valid);
+      RC_ASSERT(ap.length == metrics::path_length(ap.path));
+      RC_ASSERT(ap.first_iteration <= ap.last_iteration);
+      std::vector<std::int64_t> key;
+      for (const Cell& c : ap.path) key.push_back(sc.g.index(c));
+      RC_ASSERT(seen.insert(key).second);
+      counted += ap.count;
+      has_best = has_best || ap.path == run.result.path;
+    }
+    RC_ASSERT(counted == survivors);
+    RC_ASSERT(has_best == run.result.found);
+    RC_ASSERT(stream.doubles_drawn() == run.result.extra.at("draws").get<std::uint64_t>());
+  });
+}
+
+TEST_CASE("prop_astar_han_equals_dijkstra", "[aco][prop]") {
+  rc::prop("astar-han (Chebyshev, admissible under every policy) finds Dijkstra's cost", [] {
+    Scenario sc;
+    sc.g = *testing::gen_grid(14, 14, 0.5);
+    const auto n = sc.g.cell_count();
+    sc.start = sc.g.cell(*rc::gen::inRange<std::int64_t>(0, n));
+    sc.goal = sc.g.cell(*rc::gen::inRange<std::int64_t>(0, n));
+    sc.g.set_blocked(sc.start, false);
+    sc.g.set_blocked(sc.goal, false);
+    sc.policy = *testing::gen_policy();
+    const planners::Result a = plan(sc, "astar-han", planners::Json::object());
+    const search::Outcome d = search::dijkstra(sc.g, sc.start, sc.goal, sc.policy);
+    RC_ASSERT(a.found == d.found);
+    if (!a.found) return;
+    RC_ASSERT(metrics::validate_path(sc.g, a.path, sc.start, sc.goal, sc.policy).valid);
+    RC_ASSERT(search::step_counts(a.path) == search::step_counts(d.path));
+  });
+}

@@ -1,0 +1,195 @@
+// spec: shi2022.op.init, shi2022.op.crossover, shi2022.op.mutation, shi2022.op.deletion,
+// shi2022.op.elite, shi2022.plan.ga, shi2022.plan.iga, shi2022.plan.hybrid, shi2022.plan.iha
+#include <catch2/catch.hpp>
+#include <rapidcheck/catch.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <vector>
+
+#include "pathref/equations/ga_operators.hpp"
+#include "pathref/equations/metrics.hpp"
+#include "pathref/planners/genetic.hpp"
+#include "pathref/planners/planner.hpp"
+#include "pathref/planners/search.hpp"
+#include "pathref/rng/mt19937.hpp"
+#include "support/generators.hpp"
+
+using namespace pathref;
+using grid::Cell;
+using grid::CornerPolicy;
+using grid::Grid;
+using Path = std::vector<Cell>;
+
+namespace {
+
+/// A small map with start at the lower left and goal at the upper right, both freed; bounded
+/// by construction (no rejection).
+struct Scenario {
+  Grid g{1, 1};
+  Cell start;
+  Cell goal;
+  CornerPolicy policy = CornerPolicy::strict;
+};
+
+Scenario gen_scenario(double max_blocked) {
+  Scenario sc;
+  const int w = *rc::gen::inRange(2, 9);
+  const int h = *rc::gen::inRange(2, 9);
+  sc.g = testing::random_grid(*rc::gen::arbitrary<std::uint32_t>(), w, h, max_blocked);
+  sc.start = Cell{0, 0};
+  sc.goal = Cell{w - 1, h - 1};
+  sc.g.set_blocked(sc.start, false);
+  sc.g.set_blocked(sc.goal, false);
+  sc.policy = *rc::gen::element(CornerPolicy::strict, CornerPolicy::one, CornerPolicy::always);
+  return sc;
+}
+
+bool valid(const Scenario& sc, const Path& p) {
+  return metrics::validate_path(sc.g, p, sc.start, sc.goal, sc.policy).valid;
+}
+
+/// Up to `count` random initial paths of the scenario (empty when the initialisation gives up).
+std::vector<Path> some_paths(const Scenario& sc, std::uint32_t seed, std::int64_t count) {
+  genetic::Config c = genetic::shi_ga();
+  c.init_attempts = 2000;
+  rng::Stream s(seed);
+  genetic::InitOutcome o = genetic::initial_paths(sc.g, sc.start, sc.goal, sc.policy, c, s, count);
+  return o.ok ? o.paths : std::vector<Path>{};
+}
+
+planners::Result plan(const char* algo, const Scenario& sc, std::uint32_t seed) {
+  planners::Request req;
+  req.grid = &sc.g;
+  req.start = sc.start;
+  req.goal = sc.goal;
+  req.policy = sc.policy;
+  req.seed = seed;
+  req.params = {{"population", 8}, {"generations", 4}, {"init_attempts", 2000}};
+  if (std::string(algo) == "hybrid-ga-aco" || std::string(algo) == "iha") {
+    req.params["aco_ants"] = 4;
+    req.params["aco_iterations"] = 3;
+  }
+  return planners::find_planner(algo)->run(req);
+}
+
+}  // namespace
+
+TEST_CASE("prop: shi2022.op.init feasible chains are valid paths through their genes") {
+  rc::prop("repair", [] {
+    const Scenario sc = gen_scenario(0.3);
+    const int m = *rc::gen::inRange(0, 4);
+    Path genes{sc.start};
+    for (int i = 0; i < m; ++i)
+      genes.push_back(Cell{*rc::gen::inRange<std::int64_t>(0, sc.g.width()),
+                           *rc::gen::inRange<std::int64_t>(0, sc.g.height())});
+    genes.push_back(sc.goal);
+    const ga::ChainRepair r = ga::connect_chain(sc.g, genes, sc.policy);
+    RC_ASSERT(r.feasible == (r.reason == "ok"));
+    if (r.feasible) {
+      RC_ASSERT(valid(sc, r.path));
+      // The genes reappear in order (repeats dropped).
+      std::size_t at = 0;
+      for (const Cell gcell : genes) {
+        while (at < r.path.size() && !(r.path[at] == gcell)) ++at;
+        RC_ASSERT(at < r.path.size());
+      }
+    }
+  });
+}
+
+TEST_CASE("prop: shi2022.op.deletion never lengthens a path and keeps it valid") {
+  rc::prop("deletion", [] {
+    const Scenario sc0 = gen_scenario(0.35);
+    const Path walk = *testing::gen_walk(sc0.g, sc0.policy, 30);
+    RC_PRE(walk.size() >= 1);
+    Scenario sc = sc0;
+    sc.start = walk.front();
+    sc.goal = walk.back();
+    const Path d = ga::delete_redundant(sc.g, walk, sc.policy);
+    RC_ASSERT(valid(sc, walk));
+    RC_ASSERT(valid(sc, d));
+    RC_ASSERT(metrics::path_length(d) <= metrics::path_length(walk));
+    RC_ASSERT((d.size() < walk.size()) == (metrics::path_length(d) < metrics::path_length(walk)));
+    RC_ASSERT(ga::delete_redundant(sc.g, d, sc.policy) == d);
+  });
+}
+
+TEST_CASE("prop: shi2022.op.loops leaves a simple valid path, never longer") {
+  rc::prop("loops", [] {
+    const Scenario sc0 = gen_scenario(0.35);
+    const Path walk = *testing::gen_walk(sc0.g, sc0.policy, 40);
+    RC_PRE(walk.size() >= 1);
+    Scenario sc = sc0;
+    sc.start = walk.front();
+    sc.goal = walk.back();
+    const Path d = ga::remove_loops(walk);
+    RC_ASSERT(valid(sc, d));
+    RC_ASSERT(metrics::path_length(d) <= metrics::path_length(walk));
+    for (std::size_t i = 0; i < d.size(); ++i)
+      for (std::size_t j = i + 1; j < d.size(); ++j) RC_ASSERT(!(d[i] == d[j]));
+    RC_ASSERT(ga::remove_loops(d) == d);
+  });
+}
+
+TEST_CASE("prop: shi2022.op.elite never loses the best") {
+  rc::prop("elite", [] {
+    const auto raw = *rc::gen::nonEmpty(rc::gen::container<std::vector<int>>(rc::gen::inRange(-50, 50)));
+    std::vector<double> f;
+    for (const int v : raw) f.push_back(static_cast<double>(v) / 4.0);
+    const auto count = static_cast<std::size_t>(*rc::gen::inRange<std::size_t>(1, f.size() + 1));
+    const std::vector<std::size_t> keep = ga::elite_indices(f, count);
+    RC_ASSERT(keep.size() == count);
+    const auto best = static_cast<std::size_t>(std::max_element(f.begin(), f.end(), [](double a, double b) { return a < b; }) - f.begin());
+    RC_ASSERT(keep.front() == best);
+    const double lowest_kept = f[keep.back()];
+    for (std::size_t i = 0; i < f.size(); ++i)
+      if (f[i] > lowest_kept) RC_ASSERT(std::find(keep.begin(), keep.end(), i) != keep.end());
+    for (std::size_t i = 1; i < keep.size(); ++i) RC_ASSERT(f[keep[i - 1]] >= f[keep[i]]);
+  });
+}
+
+TEST_CASE("prop: shi2022.op.crossover and shi2022.op.mutation children are valid paths") {
+  rc::prop("children", [] {
+    const Scenario sc = gen_scenario(0.25);
+    const std::vector<Path> ps = some_paths(sc, *rc::gen::arbitrary<std::uint32_t>(), 2);
+    RC_TAG(ps.size() >= 2 ? "two paths" : "initialisation gave up");
+    if (ps.size() < 2) return;  // the initialisation gave up on this map: nothing to check
+    for (const ga::CrossPoint pt : ga::crossover_points(ps[0], ps[1])) {
+      const ga::Children c = ga::crossover_at(ps[0], ps[1], pt);
+      RC_ASSERT(valid(sc, c.first));
+      RC_ASSERT(valid(sc, c.second));
+      RC_ASSERT(c.first.size() + c.second.size() == ps[0].size() + ps[1].size());
+    }
+    for (std::size_t k = 1; k + 1 < ps[0].size(); ++k)
+      for (const Cell c : ga::mutation_candidates(sc.g, ps[0], k, sc.policy)) {
+        Path m = ps[0];
+        m[k] = c;
+        RC_ASSERT(valid(sc, m));
+      }
+  });
+}
+
+TEST_CASE("prop: GA planners return valid paths, replay by seed, never beat Dijkstra") {
+  rc::prop("planners", [] {
+    const Scenario sc = gen_scenario(0.25);
+    const auto seed = *rc::gen::arbitrary<std::uint32_t>();
+    const char* algo = *rc::gen::element("ga", "iga-shi", "iga-shi-nomax", "hybrid-ga-aco", "iha");
+    const planners::Result r = plan(algo, sc, seed);
+    RC_TAG(r.found ? "found" : "not found");
+    const search::Outcome opt = search::dijkstra(sc.g, sc.start, sc.goal, sc.policy);
+    if (r.found) {
+      RC_ASSERT(valid(sc, r.path));
+      RC_ASSERT(r.length == metrics::path_length(r.path));
+      RC_ASSERT(opt.found);
+      RC_ASSERT(r.length >= opt.length * (1.0 - 1e-12));
+    } else {
+      RC_ASSERT(r.path.empty());
+    }
+    const planners::Result again = plan(algo, sc, seed);
+    RC_ASSERT(again.found == r.found);
+    RC_ASSERT(again.path == r.path);
+    RC_ASSERT(again.best_per_iteration == r.best_per_iteration);
+    RC_ASSERT(again.extra == r.extra);
+  });
+}

@@ -1,0 +1,233 @@
+// spec: reproduce.stats, reproduce.judge, reproduce.quick, reproduce.curves, reproduce.run,
+// reproduce.shi2022.maps, reproduce.han.maps (spec/reproduce.md)
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <vector>
+
+#include "pathref/core/error.hpp"
+#include "pathref/grid/grid.hpp"
+#include "pathref/reproduce/han.hpp"
+#include "pathref/reproduce/report.hpp"
+#include "pathref/reproduce/runs.hpp"
+#include "pathref/reproduce/shi2022.hpp"
+#include "pathref/reproduce/stats.hpp"
+
+using namespace pathref;
+using V = std::vector<double>;
+
+namespace {
+constexpr double inf = std::numeric_limits<double>::infinity();
+}
+
+TEST_CASE("reproduce.stats: mean and sample std, hand-computed", "[reproduce]") {
+  // 2,4,4,4,5,5,7,9: sum 40, mean 5; squared deviations 9+1+1+1+0+0+4+16 = 32;
+  // sample variance 32/7 (population 32/8 = 4).
+  const V a{2, 4, 4, 4, 5, 5, 7, 9};
+  CHECK(reproduce::mean(a) == 5.0);
+  CHECK(reproduce::sample_std(a) == std::sqrt(32.0 / 7.0));
+  CHECK(reproduce::sample_std(a) != 2.0);  // not the population std
+  // 1,2,3,4: mean 2.5; deviations 2.25+0.25+0.25+2.25 = 5; s = sqrt(5/3)
+  const V b{1, 2, 3, 4};
+  CHECK(reproduce::mean(b) == 2.5);
+  CHECK(reproduce::sample_std(b) == std::sqrt(5.0 / 3.0));
+  CHECK(reproduce::sample_std(V{7, 7, 7}) == 0.0);
+  CHECK(reproduce::minimum(V{3, -1, 2}) == -1.0);
+  CHECK(reproduce::maximum(V{3, -1, 2}) == 3.0);
+  // the Shi optima: 10 + 14 sqrt2 and 16 + 11 sqrt2; mean of the two = 13 + 12.5 sqrt2 (exact sums differ
+  // by rounding only)
+  const double c = 10 + 14 * std::numbers::sqrt2, d = 16 + 11 * std::numbers::sqrt2;
+  CHECK(reproduce::mean(V{c, d}) == (c + d) / 2);
+  CHECK(reproduce::sample_std(V{c, d}) == Approx(std::fabs(c - d) / std::numbers::sqrt2).epsilon(1e-15));
+}
+
+TEST_CASE("reproduce.stats: domain and summaries", "[reproduce]") {
+  CHECK_THROWS_AS(reproduce::mean(V{}), DomainError);
+  CHECK_THROWS_AS(reproduce::sample_std(V{1.0}), DomainError);
+  CHECK_THROWS_AS(reproduce::mean(V{1.0, std::nan("")}), DomainError);
+  CHECK_THROWS_AS(reproduce::sample_std(V{1.0, inf}), DomainError);
+  CHECK_THROWS_AS(reproduce::minimum(V{}), DomainError);
+  const auto s0 = reproduce::summarize(V{});
+  CHECK(s0.n == 0);
+  CHECK_FALSE(s0.mean.has_value());
+  const auto s1 = reproduce::summarize(V{4.0});
+  CHECK(s1.n == 1);
+  CHECK(*s1.mean == 4.0);
+  CHECK_FALSE(s1.std.has_value());
+  CHECK(*s1.min == 4.0);
+  const auto s3 = reproduce::summarize(V{1, 2, 6});
+  CHECK(*s3.mean == 3.0);
+  CHECK(*s3.std == std::sqrt(7.0));  // (4 + 1 + 9) / 2 = 7
+  CHECK(*s3.max == 6.0);
+}
+
+TEST_CASE("reproduce.judge: reductions, Welch t, printed numbers", "[reproduce]") {
+  CHECK(reproduce::reduction_percent(8, 2) == 75.0);
+  CHECK(reproduce::reduction_percent(24, 13) == Approx(45.8333333333).epsilon(1e-10));
+  CHECK(reproduce::reduction_percent(10, 12) == -20.0);
+  CHECK_THROWS_AS(reproduce::reduction_percent(0, 1), DomainError);
+  // a = 1,2,3 (mean 2, s 1), b = 4,5,6 (mean 5, s 1): t = -3 / sqrt(1/3 + 1/3)
+  const auto t = reproduce::welch_t(V{1, 2, 3}, V{4, 5, 6});
+  REQUIRE(t.has_value());
+  CHECK(*t == Approx(-3.0 / std::sqrt(2.0 / 3.0)).epsilon(1e-14));
+  CHECK_FALSE(reproduce::welch_t(V{1, 1}, V{2, 2}).has_value());
+  CHECK_THROWS_AS(reproduce::welch_t(V{1}, V{2, 3}), DomainError);
+
+  CHECK(reproduce::printed_decimals("29.8") == 1);
+  CHECK(reproduce::printed_decimals("31.56") == 2);
+  CHECK(reproduce::printed_decimals("26") == 0);
+  CHECK_THROWS_AS(reproduce::printed_decimals("2."), DomainError);
+  CHECK_THROWS_AS(reproduce::printed_decimals(".5"), DomainError);
+  CHECK_THROWS_AS(reproduce::printed_decimals("1e3"), DomainError);
+  CHECK(reproduce::matches_printed(10 + 14 * std::numbers::sqrt2, "29.8"));
+  CHECK(reproduce::matches_printed(16 + 11 * std::numbers::sqrt2, "31.56"));
+  CHECK_FALSE(reproduce::matches_printed(30.384776310850242, "29.8"));  // 8 + 16 sqrt2 - 0.24...
+  CHECK(reproduce::matches_printed(13.4, "13"));
+  CHECK_FALSE(reproduce::matches_printed(13.6, "13"));
+  CHECK(reproduce::fixed(2.0, 2) == "2.00");
+  CHECK(reproduce::fixed(0.375, 2) == "0.38");  // exact binary tie: to even
+  CHECK(reproduce::fixed(0.125, 2) == "0.12");  // exact binary tie: to even (as Python's format)
+
+  CHECK(reproduce::judge_about_percent(45.8, 46) == reproduce::Verdict::holds);
+  CHECK(reproduce::judge_about_percent(36.0, 46) == reproduce::Verdict::holds);  // boundary
+  CHECK(reproduce::judge_about_percent(35.9, 46) == reproduce::Verdict::fails);
+  CHECK(reproduce::judge_about_percent(-5.0, 21) == reproduce::Verdict::fails);
+  CHECK(reproduce::to_string(reproduce::Verdict::fails) == "does not hold");
+}
+
+TEST_CASE("reproduce.quick: overrides only the named integer parameters, only downwards", "[reproduce]") {
+  const reproduce::Json defaults{{"ants", 50},       {"iterations", 100}, {"alpha", 1.0},
+                                 {"aco_ants", 50},   {"aco_iterations", 100}, {"population", 200},
+                                 {"generations", 50}, {"rho", 0.9},        {"ants_x", 99},
+                                 {"heuristic", "octile"}, {"population2", 5}};
+  const reproduce::Json q = reproduce::quick_overrides(defaults);
+  CHECK(q == reproduce::Json{{"ants", 8},        {"iterations", 10},  {"aco_ants", 8},
+                             {"aco_iterations", 10}, {"population", 20}, {"generations", 10}});
+  CHECK(reproduce::quick_overrides(reproduce::Json{{"ants", 5}, {"iterations", 10}}).empty());
+  CHECK(reproduce::quick_overrides(reproduce::Json{{"ants", 50.0}}).empty());  // not an integer
+}
+
+TEST_CASE("reproduce.curves: pointwise mean where every run is finite", "[reproduce]") {
+  const auto m = reproduce::mean_curve({V{inf, 3, 2}, V{4, 3, 1}});
+  REQUIRE(m.size() == 3);
+  CHECK(std::isinf(m[0]));
+  CHECK(m[1] == 3.0);
+  CHECK(m[2] == 1.5);
+  const auto u = reproduce::mean_curve({V{1, 2}, V{3}});
+  REQUIRE(u.size() == 2);
+  CHECK(u[0] == 2.0);
+  CHECK(std::isinf(u[1]));  // the shorter run has no value there
+  CHECK(reproduce::mean_curve({}).empty());
+}
+
+TEST_CASE("reproduce.stats: best run is shortest, then fewest turns, then lowest seed", "[reproduce]") {
+  std::vector<reproduce::RunRecord> runs(4);
+  runs[0].seed = 1, runs[0].found = false;
+  runs[1].seed = 2, runs[1].found = true, runs[1].length = 5.0, runs[1].turns = 3;
+  runs[2].seed = 3, runs[2].found = true, runs[2].length = 5.0, runs[2].turns = 1;
+  runs[3].seed = 4, runs[3].found = true, runs[3].length = 6.0, runs[3].turns = 0;
+  CHECK(reproduce::best_run(runs) == std::optional<std::size_t>{2});
+  runs[1].turns = 1;
+  CHECK(reproduce::best_run(runs) == std::optional<std::size_t>{1});
+  CHECK_FALSE(reproduce::best_run(std::vector<reproduce::RunRecord>(2)).has_value());
+}
+
+TEST_CASE("reproduce.run: registered planners by name, missing ones reported", "[reproduce]") {
+  // 3x3 open grid: the shortest (0,0) -> (2,2) path is the diagonal, 2 sqrt2, no turn.
+  const grid::Grid g(3, 3);
+  const auto missing = reproduce::run_series("no-such-planner", reproduce::Json::object(), g, {0, 0}, {2, 2},
+                                             grid::CornerPolicy::strict, 1, 5, false, {}, "test");
+  CHECK(missing.at("available") == false);
+  CHECK(missing.at("reason") == "planner 'no-such-planner' is not available in this build");
+  const auto d = reproduce::run_series("dijkstra", reproduce::Json::object(), g, {0, 0}, {2, 2},
+                                       grid::CornerPolicy::strict, 7, 2, false, {}, "test");
+  REQUIRE(d.at("available") == true);
+  CHECK(d.at("seeds") == reproduce::Json::array({7, 8}));
+  CHECK(d.at("summary").at("found") == 2);
+  CHECK(d.at("summary").at("valid") == 2);
+  CHECK(d.at("summary").at("length").at("min").get<double>() == 2 * std::numbers::sqrt2);
+  CHECK(d.at("summary").at("length").at("std").get<double>() == 0.0);
+  CHECK(d.at("summary").at("turns").at("max").get<double>() == 0.0);
+  CHECK(d.at("best").at("path") == reproduce::Json::parse("[[0,0],[1,1],[2,2]]"));
+  CHECK(reproduce::run_values(d, "length") == V{2 * std::numbers::sqrt2, 2 * std::numbers::sqrt2});
+  // an L-shaped corridor: one turn, length 4
+  const grid::Grid l = grid::Grid::from_rows_top_first({"..#", "#.#", "#.."});  // top row first
+  const auto t = reproduce::run_series("dijkstra", reproduce::Json::object(), l, {0, 2}, {2, 0},
+                                       grid::CornerPolicy::strict, 1, 1, false, {}, "test");
+  CHECK(t.at("summary").at("length").at("min").get<double>() == 4.0);
+  CHECK(t.at("summary").at("turns").at("min").get<double>() == 2.0);
+}
+
+TEST_CASE("reproduce.shi2022.maps: MATLAB endpoints and blocked endpoints", "[reproduce]") {
+  const grid::Grid g(20, 10);
+  const auto [s, e] = reproduce::shi2022_endpoints(g, reproduce::Orientation::file);
+  CHECK(s == grid::Cell{0, 9});
+  CHECK(e == grid::Cell{19, 0});
+  const auto [ps, pe] = reproduce::shi2022_endpoints(g, reproduce::Orientation::paper);
+  CHECK(ps == grid::Cell{0, 0});
+  CHECK(pe == grid::Cell{19, 9});
+  // paper orientation: the file's first row (top as read) becomes y = 0
+  const grid::Grid f = grid::Grid::from_rows_top_first({"#..", "...", "..#"});
+  const grid::Grid p = reproduce::oriented(f, reproduce::Orientation::paper);
+  CHECK(p.blocked(grid::Cell{0, 0}));
+  CHECK(p.blocked(grid::Cell{2, 2}));
+  CHECK_FALSE(p.blocked(grid::Cell{0, 2}));
+  CHECK(reproduce::oriented(f, reproduce::Orientation::file) == f);
+  CHECK_THROWS_AS(reproduce::parse_orientation("up"), UsageError);
+  reproduce::ShiConfig cfg;
+  cfg.simple = reproduce::ProtocolMap{"blocked.txt", grid::Grid::from_rows_top_first({"#.", ".."})};
+  cfg.complex = reproduce::ProtocolMap{"free.txt", grid::Grid(2, 2)};
+  cfg.runs = 1;
+  CHECK_THROWS_WITH(reproduce::run_shi2022(cfg),
+                    "start (0, 0) is a blocked cell of the simple map 'blocked.txt'");
+  cfg.orientation = reproduce::Orientation::file;
+  cfg.simple = reproduce::ProtocolMap{"blocked.txt", grid::Grid::from_rows_top_first({"..", ".#"})};
+  CHECK_THROWS_WITH(reproduce::run_shi2022(cfg),
+                    "goal (1, 0) is a blocked cell of the simple map 'blocked.txt'");
+}
+
+TEST_CASE("reproduce.han.maps: edges and ratios", "[reproduce]") {
+  const auto e = reproduce::han_protocol_edges();
+  REQUIRE(e.size() == 19);
+  CHECK(e.front() == 10);
+  CHECK(e.back() == 100);
+  CHECK(e[1] == 15);
+  CHECK(reproduce::han_ratio(0, 3) == 0.2);
+  CHECK(reproduce::han_ratio(1, 3) == 0.45);
+  CHECK(reproduce::han_ratio(2, 3) == 0.7);
+  CHECK(reproduce::han_ratio(0, 1) == 0.45);
+  CHECK_THROWS_AS(reproduce::han_ratio(3, 3), DomainError);
+}
+
+TEST_CASE("reproduce.markdown: numbers come from the document", "[reproduce]") {
+  const reproduce::Json results = reproduce::Json::parse(R"({
+    "x": {"available": true, "summary": {"runs": 3, "found": 2, "valid": 2,
+      "length": {"min": 29.79898987322334, "mean": 30.5, "std": null},
+      "turns": {"mean": 2.5, "std": 0.7071067811865476, "min": 2},
+      "converged_at": {"mean": 13.0, "std": 1.0}, "converged_at_whole_curve": {"mean": 113.0},
+      "drive_time_s": {"mean": 21.125}, "wall_ms": {"mean": 4.25}}},
+    "y": {"available": false, "reason": "planner 'y' is not available in this build"}})");
+  const std::string md = reproduce::md_results_table(results, {"x", "y", "z"}, "k");
+  CHECK(md.find("<!-- results:k -->") == 0);
+  CHECK(md.find("| `x` | 3 | 2 | 2 | 29.7990 | 30.5000 | — | 2.50 | 0.71 | 2 | 13.00 | 1.00 | 113.00 | 21.12 | 4.2 |") !=
+        std::string::npos);
+  CHECK(md.find("| `y` | not available in this build |") != std::string::npos);
+  CHECK(md.find("| `z` | not available in this build |") != std::string::npos);
+}
+
+TEST_CASE("reproduce.markdown: verdict summary lists the ids per verdict", "[reproduce]") {
+  reproduce::Claim a{"A.1", "t", "s", "1", "1", "r", reproduce::Verdict::holds, ""};
+  reproduce::Claim b{"B.2", "t", "s", "1", "2", "r", reproduce::Verdict::fails, ""};
+  reproduce::Claim c{"C.3", "t", "s", "1", "—", "", reproduce::Verdict::untestable, "why"};
+  reproduce::Claim d{"D.4", "t", "s", "1", "1", "r", reproduce::Verdict::holds, ""};
+  const reproduce::Json claims = reproduce::Json::array(
+      {reproduce::claim_json(a), reproduce::claim_json(b), reproduce::claim_json(c), reproduce::claim_json(d)});
+  CHECK(reproduce::md_verdict_summary(claims) ==
+        "4 claims: 2 hold, 1 do not hold, 1 cannot be tested.\n\n- holds: A.1, D.4\n- does not hold: B.2\n"
+        "- cannot be tested: C.3\n");
+  const std::string table = reproduce::md_claims(claims);
+  CHECK(table.find("| B.2 | t | s | 1 | 2 | **does not hold** | r |") != std::string::npos);
+  CHECK(table.find("| C.3 | t | s | 1 | — | cannot be tested | why |") != std::string::npos);
+}
