@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -31,6 +32,17 @@ struct IScene {
   I w = 1, h = 1;
   std::vector<std::vector<IP>> polys;
 };
+
+/// RapidCheck prints counterexamples with this (found by ADL).
+[[maybe_unused]] void showValue(const IScene& is, std::ostream& os) {
+  os << "origin (" << is.ox << ", " << is.oy << ")/100, cell " << is.s << "/100, " << is.w << "x" << is.h
+     << ", r " << is.r << "/100, polygons (hundredths):";
+  for (const auto& p : is.polys) {
+    os << " [";
+    for (const IP& v : p) os << " (" << v.x << "," << v.y << ")";
+    os << " ]";
+  }
+}
 
 Decimal hundredths(I v) { return *parse_decimal(std::to_string(v) + "e-2"); }
 
@@ -143,6 +155,12 @@ double pseg2(DP p, DP a, DP b) {
   const double qx = a.x + t * dx - p.x, qy = a.y + t * dy - p.y;
   return qx * qx + qy * qy;
 }
+double fcross(DP a, DP b, DP c) { return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x); }
+/// Proper crossing of segments ab and cd in binary64 (touching cases are caught by the distances).
+bool fcrosses(DP a, DP b, DP c, DP d) {
+  const double o1 = fcross(a, b, c), o2 = fcross(a, b, d), o3 = fcross(c, d, a), o4 = fcross(c, d, b);
+  return ((o1 > 0 && o2 < 0) || (o1 < 0 && o2 > 0)) && ((o3 > 0 && o4 < 0) || (o3 < 0 && o4 > 0));
+}
 bool float_blocked(const Scene& s, const std::vector<std::vector<DP>>& polys, double r, I x, I y) {
   const double ox = std::stod(to_string(s.origin.x)), oy = std::stod(to_string(s.origin.y));
   const double cs = std::stod(to_string(s.cell_size));
@@ -165,6 +183,7 @@ bool float_blocked(const Scene& s, const std::vector<std::vector<DP>>& polys, do
       const DP a = v[i], b = v[(i + 1) % v.size()];
       for (int j = 0; j < 4; ++j) {
         const DP p = c[j], q = c[(j + 1) % 4];
+        if (fcrosses(a, b, p, q)) best = 0;  // an edge through the square, no vertex inside
         best = std::min({best, pseg2(a, p, q), pseg2(b, p, q), pseg2(p, a, b), pseg2(q, a, b)});
       }
     }
@@ -271,9 +290,32 @@ TEST_CASE("prop_inflation_float_differs_only_near_r", "[inflation][prop]") {
         RC_ASSERT(near);
       }
   });
-  // the property is not vacuous: exact ties occur, and binary64 decides some of them wrongly
-  CHECK(ties > 0);
-  CHECK(disagreements > 0);
+  // Random scenes hit ties and binary64 mistakes only now and then (the counts are printed, not
+  // asserted, so the property is not flaky); the case below pins one of each deterministically.
+  INFO("ties " << ties << ", binary64 disagreements " << disagreements);
+  SUCCEED();
+}
+
+TEST_CASE("inflation: a constructed tie exists and binary64 decides it wrongly", "[inflation]") {
+  // Cell (0,0) = [0, 0.1]^2; the square [0.4, 0.5] x [0, 0.1] lies exactly r = 0.3 to its right.
+  // Exact: distance 0.3 = r, a tie, so the cell is blocked (spec/inflation.md: closed disc).
+  // binary64: 0.4 - 0.1 = 0.30000000000000004 and its square exceeds fl(0.3 * 0.3), so free.
+  IScene is;
+  is.s = 10;
+  is.w = 1;
+  is.h = 1;
+  is.r = 30;
+  is.polys = {{{40, 0}, {50, 0}, {50, 10}, {40, 10}}};
+  const Scene s = to_scene(is);
+  REQUIRE(valid(s));
+  std::vector<std::vector<DP>> dp{{{0.4, 0.0}, {0.5, 0.0}, {0.5, 0.1}, {0.4, 0.1}}};
+  CHECK(compare_cell_distance(s, 0, {0, 0}) == 0);
+  CHECK(inflate_polygons(s).blocked({0, 0}));
+  CHECK_FALSE(float_blocked(s, dp, 0.3, 0, 0));
+  // one hundredth less and the exact rule frees the cell too: the tie is decided by <=, not by luck
+  const Scene smaller = to_scene(is, 29);
+  CHECK(compare_cell_distance(smaller, 0, {0, 0}) > 0);
+  CHECK_FALSE(inflate_polygons(smaller).blocked({0, 0}));
 }
 
 TEST_CASE("prop_inflation_grid_equals_polygon_rule", "[inflation][prop]") {
