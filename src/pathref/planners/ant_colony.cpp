@@ -234,7 +234,10 @@ Json to_params(const Config& c) {
 Config from_params(const Config& base, const Json& params) {
   Config c = base;
   const Json allowed = to_params(base);
-  for (const auto& [k, v] : params.items()) {
+  for (const auto& item : params.items()) {
+    // not a structured binding: clang 14 cannot capture one in the lambdas below
+    const std::string& k = item.key();
+    const Json& v = item.value();
     if (!allowed.contains(k)) throw UsageError("unknown ant-colony parameter '" + k + "'");
     const bool want_int = allowed.at(k).is_number_integer();
     const bool want_num = allowed.at(k).is_number();
