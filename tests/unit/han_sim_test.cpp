@@ -10,6 +10,7 @@
 
 #include "pathref/core/error.hpp"
 #include "pathref/equations/rls.hpp"
+#include "pathref/io/svg_sim.hpp"
 #include "pathref/planners/planner.hpp"
 #include "pathref/sim/encounter.hpp"
 #include "pathref/sim/iaco_astar.hpp"
@@ -181,7 +182,9 @@ TEST_CASE("han.sim.run: a frontal detour rejoins the global path inside it", "[h
 
 TEST_CASE("han.sim.run: overtaking from behind and head-on without a detour", "[han-sim]") {
   // Overtaking at 2 m/s from 4 m behind: under the earlier rules (side + robot on the obstacle's
-  // ray -> drive on) the obstacle hit the robot from behind in 10 steps; now waiting and driving
+  // ray -> drive on) the obstacle hit the robot from behind in 10 steps, and in deadend.json and
+  // room.json the robot drove on into the head-on obstacle (7 collision steps each, none flagged;
+  // replayed with tools/crosscheck/rules/han_sim.py of commit 35ae60f). Now waiting and driving
   // on are both predicted to collide, so the robot steps aside (han.sim.evade).
   const auto o = sim::simulate(load("overtake.json"));
   CHECK(o.reached_goal);
@@ -335,4 +338,35 @@ TEST_CASE("han.plan.iaco-astar: the global planner's parameters as <planner>.<na
   req.params = planners::Json{{"global", "astar"}, {"astar.heuristic", "chebyshev"}};
   const auto a = p->run(req);
   CHECK(a.params_used.at("astar.heuristic") == "chebyshev");
+}
+
+namespace {
+std::size_t count(const std::string& text, const std::string& what) {
+  std::size_t n = 0;
+  for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+  return n;
+}
+}  // namespace
+
+TEST_CASE("han.sim.run: the SVG has one wait marker per wait and time marks", "[han-sim]") {
+  // spec/han-sim.md, CLI: one orange circle per wait interval with its duration (the side trace
+  // waits once, 4.75 s to 9.375 s, i.e. 37 steps: formerly 37 identical circles), and a time mark
+  // every 1 s on the robot's and the obstacle's tracks (arrival 16.625 s: marks 0, 1, ..., 16).
+  const sim::Scenario s = load("side.json");
+  const auto r = sim::simulate(s);
+  const std::string svg = io::svg_simulation(s, r);
+  CHECK(count(svg, "class=\"wait\"") == 1);
+  CHECK(count(svg, ">wait 4.6 s</text>") == 1);
+  // the robot stands still from 4.75 s to 9.375 s: its marks 5 ... 9 share one dot "5-9"
+  CHECK(count(svg, "class=\"time-mark\"") == 13);
+  CHECK(count(svg, ">5-9</text>") == 1);
+  CHECK(count(svg, "class=\"obstacle-time-mark\"") == 17);
+  CHECK(svg.find(">16</text>") != std::string::npos);
+  CHECK(svg.find("time marks every 1 s") != std::string::npos);
+  // The dead-end run (about 22 s): marks every 2 s; the overtaking run draws its evasion.
+  const sim::Scenario d = load("deadend.json");
+  const std::string dsvg = io::svg_simulation(d, sim::simulate(d));
+  CHECK(dsvg.find("time marks every 2 s") != std::string::npos);
+  const sim::Scenario o = load("overtake.json");
+  CHECK(count(io::svg_simulation(o, sim::simulate(o)), "class=\"evasion\"") == 1);
 }
