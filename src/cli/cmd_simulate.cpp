@@ -45,14 +45,29 @@ int run_simulate(const SimulateOptions& o) {
                  s.path.empty() ? s.planner : std::string("given path"));
     }
     fmt::print("reached goal: {}\n", r.reached_goal ? "yes" : "no");
-    fmt::print("collisions: {}\n", r.collisions.size());
+    std::size_t outside = 0;
+    for (const auto& c : r.collisions) outside += c.outside_guarantee.empty() ? 0U : 1U;
+    fmt::print("collisions: {} ({} outside the guarantee)\n", r.collisions.size(), outside);
+    for (const auto& c : r.collisions)
+      fmt::print("collision: t = {:.6f} s with O{} at {:.6f} m ({})\n", c.t, c.obstacle + 1, c.distance,
+                 c.outside_guarantee.empty() ? std::string("inside the guarantee: a defect of the rules")
+                                             : "outside the guarantee: " + c.outside_guarantee);
     for (const auto& w : r.waits)
       fmt::print("wait: {:.6f} s to {:.6f} s ({:.6f} s)\n", w.start, w.end, w.end - w.start);
     for (const auto& p : r.replans)
       fmt::print("replan: t = {:.6f} s from ({}, {}) to local target ({}, {}), {} cells\n", p.t, p.from.x,
                  p.from.y, p.target.x, p.target.y, p.detour.size());
+    for (const auto& e : r.evasions)
+      fmt::print("evade: t = {:.6f} s from ({}, {}) to refuge ({}, {}), {} cells, rejoin at ({}, {})\n", e.t,
+                 e.from.x, e.from.y, e.refuge.x, e.refuge.y, e.path.size(), e.target.x, e.target.y);
+    for (const auto& u : r.unavoidable) {
+      std::string ids;
+      for (const auto id : u.obstacles) ids += (ids.empty() ? "O" : ", O") + std::to_string(id + 1);
+      fmt::print("unavoidable: t = {:.6f} s with {} ({})\n", u.t, ids, u.reason);
+    }
     fmt::print("waits: {} ({:.6f} s)\n", r.waits.size(), r.wait_time);
     fmt::print("replans: {}\n", r.replans.size());
+    fmt::print("evasions: {}\n", r.evasions.size());
     fmt::print("distance: {:.6f} m\n", r.distance);
     fmt::print("time: {:.6f} s\n", r.time);
   }

@@ -107,15 +107,35 @@ else:
     assert len(rows) == len(doc["edges"]) == 2, rows
     for r, e in zip(rows, doc["edges"]):
         v = e["variants"]
-        f = lambda k: f'{v[k]["found"]}/{v[k]["runs"]}'
-        want = [str(e["edge"]), fx(v["iaco-han"]["min_length"], 4), fx(v["aco"]["min_length"], 4),
-                fx(v["astar-han"]["min_length"], 4), fx(v["iaco-han"]["travel_time_s"], 2),
-                fx(v["aco"]["travel_time_s"], 2), f("iaco-han"), f("aco"), f("iaco-han@die"), f("aco@die"),
+        f = lambda k: f'{v[k]["found"]}/{v[k]["runs"]}' if k in v else "—"
+        # variants restricted to some edges (only_edges) are absent elsewhere: "—"
+        want = [str(e["edge"]), f'{e["degenerate_maps"]}/{v["iaco-han"]["maps"]}',
+                fx(v["iaco-han"]["min_length"], 4), fx(v["aco"]["min_length"], 4),
+                fx(v["astar-han"]["min_length"], 4), fx(v.get("iaco-han:1/d", {}).get("min_length"), 4),
+                fx(v.get("aco:1/d", {}).get("min_length"), 4), f("iaco-han"), f("aco"), f("iaco-han@die"), f("aco@die"),
                 fx(v["iaco-han"]["converged_at"], 2), fx(v["aco"]["converged_at"], 2),
-                fx(v["iaco-han"]["wall_ms"], 1), fx(v["aco"]["wall_ms"], 1),
-                fx(v["iaco-han:goal"]["min_length"], 4), fx(v["iaco-han:goal"]["converged_at"], 2)]
+                fx(v["iaco-han"]["wall_ms"], 1), fx(v["aco"]["wall_ms"], 1)]
         assert r == want, (r, want)
         checked += 1
+    rows = table("dynamic")
+    assert len(rows) == len(doc["edges"]), rows
+    for r, e in zip(rows, doc["edges"]):
+        a, b = e["dynamic"]["iaco-han"], e["dynamic"]["aco"]
+        want = [str(e["edge"]), fx(a["min_distance"], 4), fx(b["min_distance"], 4), fx(a["min_time"], 2),
+                fx(b["min_time"], 2), f'{a["reached"]}/{a["simulated"]}', f'{b["reached"]}/{b["simulated"]}',
+                str(a["collided"]), str(b["collided"]), str(a["unexplained_collisions"] + b["unexplained_collisions"]),
+                fx(a["waits"], 2), fx(a["replans"], 2), fx(a["evasions"], 2)]
+        assert r == want, (r, want)
+        checked += 1
+    # the per-map dynamic summaries are the statistics of their runs (collision-free, goal reached)
+    for m in doc["maps"]:
+        for key, d in m["dynamic"].items():
+            ok = [x["distance"] for x in d["runs"] if x["simulated"] and x["reached_goal"] and x["collision_steps"] == 0]
+            assert d["summary"]["distance"]["n"] == len(ok), (key, d["summary"])
+            if ok:
+                assert d["summary"]["distance"]["min"] == min(ok)
+            # every simulated run has its two scripted obstacles recorded
+            assert all(len(x["obstacles"]) == 2 for x in d["runs"] if x["simulated"])
     for m in doc["maps"]:
         assert m["edge"] in (10, 15) and len(m["rows"]) == m["edge"]
 # the claims table: one row per claim, the same 'paper', 'pathref' and verdict text
@@ -134,7 +154,7 @@ PY
 expect_exit 0 "" reproduce han --quick --out-dir "$tmp/r"
 grep -qF "wrote $tmp/r/han.md" "$tmp/out" || { echo "FAIL: no 'wrote' line for han.md"; cat "$tmp/out"; exit 1; }
 grep -qF "[reproduce] han edge 10 map 1" "$tmp/err" || { echo "FAIL: no progress on stderr"; cat "$tmp/err"; exit 1; }
-for f in han.md han/reproduce.json han/length-vs-edge.svg han/time-vs-edge.svg han/convergence-10m.svg han/paths-10m.svg; do
+for f in han.md han/reproduce.json han/length-vs-edge.svg han/time-vs-edge.svg han/convergence-10m.svg han/paths-10m.svg han/dynamic-10m.svg; do
   [ -s "$tmp/r/$f" ] || { echo "FAIL: $f not written"; exit 1; }
 done
 check_report han "$tmp/r"

@@ -14,7 +14,7 @@ fail() { echo "FAIL: $*"; exit 1; }
 "$pathref" simulate "$data/none.json" >"$tmp/none.txt" || fail "none: exit $?"
 grep -qx 'time: 9.500000 s' "$tmp/none.txt" || { cat "$tmp/none.txt"; fail "none: time"; }
 grep -qx 'waits: 0 (0.000000 s)' "$tmp/none.txt" || fail "none: waits"
-grep -qx 'collisions: 0' "$tmp/none.txt" || fail "none: collisions"
+grep -qx 'collisions: 0 (0 outside the guarantee)' "$tmp/none.txt" || fail "none: collisions"
 
 # --- side: wait 4.75 s -> 9.375 s, arrival 16.625 s ---------------------------------------------
 "$pathref" simulate "$data/side.json" >"$tmp/side.txt"
@@ -57,6 +57,35 @@ PY
 set +e; "$pathref" simulate "$tmp/blind.json" >"$tmp/blind.txt"; rc=$?; set -e
 [ "$rc" = 1 ] || fail "a collision must exit 1, got $rc"
 grep -q '^collisions: [1-9]' "$tmp/blind.txt" || fail "collision not reported"
+
+# --- overtaking from behind: an evasion, no collision; a dead end: collisions outside the guarantee
+"$pathref" simulate "$data/overtake.json" >"$tmp/ov.txt" || { cat "$tmp/ov.txt"; fail "overtake: exit $?"; }
+grep -qx 'collisions: 0 (0 outside the guarantee)' "$tmp/ov.txt" || fail "overtake: collisions"
+grep -q '^evade: t = 0.125000 s from (0, 4) to refuge (0, 2)' "$tmp/ov.txt" || { cat "$tmp/ov.txt"; fail "overtake: evade"; }
+set +e; "$pathref" simulate "$data/deadend.json" >"$tmp/de.txt"; rc=$?; set -e
+[ "$rc" = 1 ] || fail "deadend: a collision must exit 1, got $rc"
+python3 - "$tmp/de.txt" <<'PY'
+import re, sys
+text = open(sys.argv[1]).read()
+m = re.search(r"^collisions: (\d+) \((\d+) outside the guarantee\)$", text, re.M)
+assert m and int(m.group(1)) > 0 and m.group(1) == m.group(2), text[:400]
+assert re.search(r"^unavoidable: t = [0-9.]+ s with O1 \(trapped\)$", text, re.M), text[:400]
+PY
+
+# --- iaco-astar: the global planner's parameters as iaco-han.<name>, printed and in the JSON -----
+"$pathref" plan --builtin shi6x6 --algo iaco-astar --set iaco-han.dead_end=die --set iaco-han.ants=5 \
+  --set iaco-han.iterations=3 --json >"$tmp/ia.json" || fail "iaco-astar --set iaco-han.*"
+python3 - "$tmp/ia.json" <<'PY'
+import json, sys
+d = json.load(open(sys.argv[1]))
+p = d["params"]
+assert p["global"] == "iaco-han" and p["iaco-han.dead_end"] == "die" and p["iaco-han.ants"] == 5, p
+assert p["iaco-han.eta"] == "goal_directed", p
+PY
+"$pathref" plan --builtin shi6x6 --algo iaco-astar --set iaco-han.ants=5 --set iaco-han.iterations=3 >"$tmp/ia.txt"
+grep -q 'params .*global=iaco-han.*iaco-han.ants=5' "$tmp/ia.txt" || { cat "$tmp/ia.txt"; fail "iaco-astar params printed"; }
+set +e; "$pathref" plan --builtin shi6x6 --algo iaco-astar --set dead_end=die 2>"$tmp/err.txt" >/dev/null; rc=$?; set -e
+[ "$rc" = 2 ] || fail "iaco-astar: an unprefixed parameter must exit 2, got $rc"
 
 # --- bad input: exit 2 with a JSON pointer --------------------------------------------------------
 expect_error() {  # FILE-CONTENT PATTERN

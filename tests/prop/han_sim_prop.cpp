@@ -29,27 +29,44 @@ rc::Gen<double> gen_real(double lo, double hi) {
                       [lo](int k) { return lo + static_cast<double>(k) / 1024.0; });
 }
 
+/// The kinds of encounter of the guarantee's property (spec han.sim.run, "Properties").
+enum class Kind { crossing, head_on, overtaking };
+
 /// The corridor scenario where the rules apply (spec han.sim.run, "Properties"): an empty W x 9 map,
 /// the straight global path along y = 4.5, one obstacle that either crosses the path (side: from
-/// 3 to 6 m beside it, speed 0.25 to 1 m/s, heading within +-0.5 u of perpendicular) or comes
-/// head-on (frontal: starting between 3u + 6 m and W - 3 m, lateral offset <= 0.4 m).
-sim::Scenario corridor_scenario(int W, bool side, double u, double a, double b, int sign, double noise) {
+/// 3 to 6 m beside it, speed u in [0.25, 1] m/s, heading within +-0.5 u of perpendicular), comes
+/// head-on (frontal: starting between 3u + 6 m and W - 3 m, lateral offset <= 0.4 m) or overtakes
+/// from behind (1.25 to 2 m/s, starting 4 to 8 m behind the start, lateral offset <= 0.4 m).
+/// a, b, h in [0, 1] are independent draws: a the position along the path, b the distance or the
+/// offset, h the heading (crossing) or the speed (overtaking).
+sim::Scenario corridor_scenario(int W, Kind kind, double u, double a, double b, double h, int sign, double noise) {
   sim::Scenario s;
   s.grid = grid::Grid(W, 9);
   s.start = {0, 4};
   s.goal = {W - 1, 4};
   for (int x = 0; x < W; ++x) s.path.push_back({x, 4});
   sim::MovingObstacle o;
-  if (side) {
-    const double xc = (5.5 + a * static_cast<double>(W - 9)) ;
-    const double d = 3.0 + 3.0 * b;
-    o.position = {xc, 4.5 + static_cast<double>(sign) * d};
-    o.velocity = {(b - 0.5) * u, -static_cast<double>(sign) * u};
-  } else {
-    const double lo = 3.0 * u + 6.0;
-    const double x0 = lo + a * (static_cast<double>(W) - 3.0 - lo);
-    o.position = {x0, 4.5 + 0.8 * (b - 0.5)};
-    o.velocity = {-u, 0.0};
+  switch (kind) {
+    case Kind::crossing: {
+      const double xc = 5.5 + a * static_cast<double>(W - 9);
+      const double d = 3.0 + 3.0 * b;
+      o.position = {xc, 4.5 + static_cast<double>(sign) * d};
+      o.velocity = {(h - 0.5) * u, -static_cast<double>(sign) * u};
+      break;
+    }
+    case Kind::head_on: {
+      const double lo = 3.0 * u + 6.0;
+      const double x0 = lo + a * (static_cast<double>(W) - 3.0 - lo);
+      o.position = {x0, 4.5 + 0.8 * (b - 0.5)};
+      o.velocity = {-u, 0.0};
+      break;
+    }
+    case Kind::overtaking: {
+      const double behind = 4.0 + 4.0 * a;
+      o.position = {0.5 - behind, 4.5 + 0.8 * (b - 0.5)};
+      o.velocity = {1.25 + 0.75 * h, 0.0};
+      break;
+    }
   }
   s.obstacles.push_back(o);
   s.noise = noise;
@@ -60,15 +77,17 @@ sim::Scenario corridor_scenario(int W, bool side, double u, double a, double b, 
 }  // namespace
 
 TEST_CASE("prop_han_sim_no_collision_where_rules_apply", "[han-sim][prop]") {
-  rc::prop("one side or frontal obstacle on the corridor: goal reached, no collision, limits kept", [] {
+  rc::prop("one crossing, head-on or overtaking obstacle on the corridor: goal reached, no collision, limits kept", [] {
     const int W = *rc::gen::inRange(14, 21);
-    const bool side = *rc::gen::arbitrary<bool>();
+    const Kind kind = *rc::gen::element(Kind::crossing, Kind::head_on, Kind::overtaking);
     const double u = *gen_real(0.25, 1.0);
     const double a = *gen_real(0.0, 1.0);
     const double b = *gen_real(0.0, 1.0);
+    const double h = *gen_real(0.0, 1.0);
     const int sign = *rc::gen::element(-1, 1);
     const double noise = *rc::gen::element(0.0, 0.02);
-    sim::Scenario s = corridor_scenario(W, side, u, a, b, sign, noise);
+    RC_TAG(kind == Kind::crossing ? "crossing" : kind == Kind::head_on ? "head-on" : "overtaking");
+    sim::Scenario s = corridor_scenario(W, kind, u, a, b, h, sign, noise);
     s.seed = *rc::gen::inRange<std::uint32_t>(0, 1000);
     const auto r = sim::simulate(s);
     RC_ASSERT(r.reached_goal);
@@ -170,11 +189,12 @@ TEST_CASE("prop_han_classify_mirror_symmetric", "[han-sim][prop]") {
 }
 
 TEST_CASE("prop_han_rls_prediction_exact_on_linear_obstacles", "[han-sim][prop]") {
-  rc::prop("noise-free linear motion sampled every dt: the prediction at t + H is within 16 ulps of the scale times the extrapolation factor", [] {
+  rc::prop("noise-free linear motion sampled every dt: the prediction at t + 3 is within the bound of spec han.sim.run", [] {
     const double x0 = *gen_real(-20.0, 20.0), y0 = *gen_real(-20.0, 20.0);
     const double vx = *gen_real(-2.0, 2.0), vy = *gen_real(-2.0, 2.0);
     const double dt = *rc::gen::element(0.125, 0.1, 0.25);
     const int n = *rc::gen::inRange(2, 400);
+    const double lambda = 0.95;
     std::vector<double> t, x, y;
     for (int k = 0; k < n; ++k) {
       const double tk = static_cast<double>(k) * dt;
@@ -182,14 +202,58 @@ TEST_CASE("prop_han_rls_prediction_exact_on_linear_obstacles", "[han-sim][prop]"
       x.push_back(x0 + vx * tk);
       y.push_back(y0 + vy * tk);
     }
-    const auto e = rls::rls_estimate(t, x, y, 0.95);
+    const auto e = rls::rls_estimate(t, x, y, lambda);
     const double tp = t.back() + 3.0;
     const auto p = rls::position(rls::LinearMotion{e.A(0), e.A(1), e.B(0), e.B(1)}, tp);
-    // Scale of the coordinates times the extrapolation factor 1 + (tp - t_1) / (t_n - t_1) (a line
-    // fitted on [t_1, t_n] and evaluated at tp amplifies the coefficients' rounding by that much).
+    // spec han.sim.run, "RLS prediction on noise-free linear motion": 16 eps max(S, 1) A with
+    // A = 1 + |tp - tbar| / sigma over the weights lambda^(n-1-l) (the extrapolation's gain).
+    double sw = 0.0, swt = 0.0;
+    for (int k = 0; k < n; ++k) {
+      const double w = std::pow(lambda, n - 1 - k);
+      sw += w;
+      swt += w * t[static_cast<std::size_t>(k)];
+    }
+    const double tbar = swt / sw;
+    double var = 0.0;
+    for (int k = 0; k < n; ++k) {
+      const double d = t[static_cast<std::size_t>(k)] - tbar;
+      var += std::pow(lambda, n - 1 - k) * d * d;
+    }
+    const double amplification = 1.0 + std::fabs(tp - tbar) / std::sqrt(var / sw);
     const double scale = std::max(std::fabs(x0), std::fabs(y0)) + std::max(std::fabs(vx), std::fabs(vy)) * tp;
-    const double tol = 16.0 * 0x1p-52 * std::max(scale, 1.0) * (1.0 + tp / t.back());
+    const double tol = 16.0 * 0x1p-52 * std::max(scale, 1.0) * amplification;
     RC_ASSERT(std::fabs(p.x - (x0 + vx * tp)) <= tol);
     RC_ASSERT(std::fabs(p.y - (y0 + vy * tp)) <= tol);
+  });
+}
+
+TEST_CASE("prop_han_safety_margins_not_below_spatial_distance", "[han-sim][prop]") {
+  rc::prop("timed margins >= spatial distances: wait >= dist(R0, [o_0, o_J]), go >= classify's D", [] {
+    const auto coord = rc::gen::map(rc::gen::inRange(-64, 65), [](int k) { return static_cast<double>(k) / 8.0; });
+    const int n = *rc::gen::inRange(2, 5);
+    std::vector<Vec2> robot;
+    for (int i = 0; i < n; ++i) {
+      Vec2 v{*coord, *coord};
+      if (!robot.empty() && v == robot.back()) v.x += 0.125;
+      robot.push_back(v);
+    }
+    const rls::LinearMotion m{*coord / 4.0, *coord, *coord / 4.0, *coord};
+    const double tau = *rc::gen::element(0.0, 1.5, 10.0);
+    const double dt = *rc::gen::element(0.125, 0.25, 0.5);
+    const double H = *rc::gen::element(1.0, 3.0);
+    const double v0 = *rc::gen::element(0.0, 0.5, 1.0);
+    const auto mg = sim::safety_margins(robot, v0, 1.0, 1.0, dt, H, m, tau);
+    // the last sample time s_J = J dt <= H
+    const double sJ = static_cast<double>(mg.samples - 1) * dt;
+    const auto o0 = rls::position(m, tau);
+    const auto oJ = rls::position(m, tau + sJ);
+    const Vec2 p{o0.x, o0.y}, q{oJ.x, oJ.y};
+    const double tol = 1e-9;  // rounding of the sampled points against the exact segment
+    RC_ASSERT(mg.wait >= sim::point_segment_distance(robot.front(), p, q) - tol);
+    const auto c = sim::classify(robot, p, q, 1.0);
+    RC_ASSERT(mg.go >= c.distance - tol);
+    const double dx = robot.front().x - p.x, dy = robot.front().y - p.y;
+    RC_ASSERT(mg.wait <= std::sqrt(dx * dx + dy * dy));
+    RC_ASSERT(mg.go <= std::sqrt(dx * dx + dy * dy));
   });
 }

@@ -2,6 +2,8 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <fstream>
+#include <map>
 #include <limits>
 #include <set>
 #include <string>
@@ -73,6 +75,9 @@ TEST_CASE("aco planners: registered with the spec's default parameters", "[aco][
   CHECK(han.at("rho_min").get<double>() == 0.1);
   CHECK(han.at("draw_u") == "lazy");
   CHECK(han.at("rho_timing") == "next");
+  // the readings of spec/han.md "Options for the planners" (not Shi's Ant System conventions)
+  CHECK(han.at("eta") == "goal_directed");
+  CHECK(han.at("dead_end") == "backtrack");
   CHECK(planners::find_planner("astar-han")->defaults.at("h_form") == "chebyshev");
 }
 
@@ -207,4 +212,41 @@ TEST_CASE("han.plan.iaco: first update uses the printed rho = 0.7", "[aco][unit]
   // with a survivor in iteration 1, Eq. 7 multiplies 0.7 by f <= 0.9 before the first update
   REQUIRE_FALSE(c.extra.at("iteration_best")[0].is_null());
   CHECK(c.extra.at("rho_per_iteration")[0].get<double>() < 0.7);
+}
+
+TEST_CASE("han.plan.iaco: the defaults find a path on grid20, the former ones did not", "[aco][unit]") {
+  // spec/han.md "Options for the planners": with eta = inverse_distance and dead_end = die all
+  // 2500 ants of the default run died on grid20; the goal-directed, backtracking colony reaches
+  // the goal in every iteration and within 15 % of the optimum on this map.
+  const io::MapFile m = io::load_builtin_map(*io::find_builtin_map("grid20"));
+  const auto d = search::dijkstra(m.grid, m.start.value(), m.goal.value(), grid::CornerPolicy::strict);
+  REQUIRE(d.found);
+  const auto r = plan("iaco-han", m.grid, m.start.value(), m.goal.value(), 1);
+  REQUIRE(r.found);
+  CHECK(r.length <= 1.15 * d.length);
+  for (const Json& dead : r.extra.at("dead_ants_per_iteration")) CHECK(dead == 0);
+  const auto old = plan("iaco-han", m.grid, m.start.value(), m.goal.value(), 1,
+                        Json{{"eta", "inverse_distance"}, {"dead_end", "die"}});
+  CHECK_FALSE(old.found);
+}
+
+TEST_CASE("han.plan.iaco: every reading's golden vector differs from the defaults' run", "[aco][unit]") {
+  // golden/han-iaco/han.plan.iaco.json note Discriminating: tcIds 3-11 select one reading each on
+  // the map, seed and colony size of tcId 2; each must change the best path and the best-length
+  // curve, or an implementation ignoring the option would pass its vector.
+  std::ifstream in(std::string(PATHREF_SOURCE_DIR) + "/golden/han-iaco/han.plan.iaco.json");
+  REQUIRE(in.good());
+  const Json doc = Json::parse(in);
+  std::map<std::int64_t, Json> by_id;
+  for (const Json& g : doc.at("testGroups"))
+    for (const Json& t : g.at("tests")) by_id[t.at("tcId").get<std::int64_t>()] = t;
+  const Json& base = by_id.at(2);
+  for (std::int64_t id = 3; id <= 11; ++id) {
+    INFO("tcId " << id);
+    const Json& t = by_id.at(id);
+    CHECK(t.at("input").at("grid") == base.at("input").at("grid"));
+    CHECK(t.at("input").at("seed") == base.at("input").at("seed"));
+    CHECK(t.at("expected").at("path") != base.at("expected").at("path"));
+    CHECK(t.at("expected").at("best_per_iteration") != base.at("expected").at("best_per_iteration"));
+  }
 }

@@ -1,5 +1,5 @@
 // spec: han.maps.random, han.collision.classify, han.sim.motion, han.sim.detour, han.sim.run,
-// han.sim.scenario-format, han.plan.iaco-astar (spec/han-sim.md)
+// han.sim.scenario-format, han.sim.safety, han.sim.evade, han.plan.iaco-astar (spec/han-sim.md)
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -9,8 +9,11 @@
 #include <vector>
 
 #include "pathref/core/error.hpp"
+#include "pathref/equations/rls.hpp"
+#include "pathref/io/svg_sim.hpp"
 #include "pathref/planners/planner.hpp"
 #include "pathref/sim/encounter.hpp"
+#include "pathref/sim/iaco_astar.hpp"
 #include "pathref/sim/motion.hpp"
 #include "pathref/sim/random_map.hpp"
 #include "pathref/sim/simulate.hpp"
@@ -141,13 +144,115 @@ TEST_CASE("han.sim.run: scripted none, side and frontal encounters", "[han-sim]"
 }
 
 TEST_CASE("han.sim.run: a head-on obstacle hits a robot that ignores it", "[han-sim]") {
-  // The same frontal scenario with a clearance margin that cannot be met in time (horizon tiny):
-  // the test proves the collision detector can fire.
+  // The same frontal scenario with a horizon of 1/16 s and no margin (a nearly blind robot, outside
+  // the conditions of the guarantee): the test proves the collision detector can fire.
   auto s = load("frontal.json");
   s.horizon = 0.0625;
   s.margin = 0.0;
   const auto r = sim::simulate(s);
   CHECK_FALSE(r.collisions.empty());
+}
+
+TEST_CASE("han.sim.run: a frontal detour rejoins the global path inside it", "[han-sim]") {
+  // tests/data/sim/frontal_rejoin.json (golden han.sim.run tcId 7): the swept global cells at
+  // t = 4.125 are (6,2) ... (10,2), so the local target is (11,2), global index 11 of 0 ... 19.
+  const auto r = sim::simulate(load("frontal_rejoin.json"));
+  CHECK(r.reached_goal);
+  CHECK(r.collisions.empty());
+  REQUIRE(r.replans.size() == 1);
+  const auto& p = r.replans[0];
+  CHECK(p.t == 4.125);
+  CHECK(p.from == grid::Cell{4, 2});
+  CHECK(p.target == grid::Cell{11, 2});
+  CHECK(p.target_index == 11);
+  CHECK(p.target_index + 1 < static_cast<std::int64_t>(r.global_path.size()));  // an interior point
+  CHECK(p.detour.back() == p.target);
+  // After the detour the robot drives the rest of the global path: its samples beyond x = 11.5
+  // all lie on y = 2.5, and it ends at the goal's centre.
+  bool left_path = false;
+  for (const auto& q : r.trajectory) {
+    if (q.t > p.t && q.p.y != 2.5) left_path = true;
+    if (q.p.x > 11.5) CHECK(q.p.y == 2.5);
+  }
+  CHECK(left_path);
+  CHECK(r.trajectory.back().p == Vec2{19.5, 2.5});
+  // the sum of the steps' ds in binary64: within a few hundred roundings of 19 + 2 sqrt 2
+  CHECK(r.distance == Approx(19.0 + 2.0 * std::sqrt(2.0)).epsilon(1e-12));
+}
+
+TEST_CASE("han.sim.run: overtaking from behind and head-on without a detour", "[han-sim]") {
+  // Overtaking at 2 m/s from 4 m behind: under the earlier rules (side + robot on the obstacle's
+  // ray -> drive on) the obstacle hit the robot from behind in 10 steps, and in deadend.json and
+  // room.json the robot drove on into the head-on obstacle (7 collision steps each, none flagged;
+  // replayed with tools/crosscheck/rules/han_sim.py of commit 35ae60f). Now waiting and driving
+  // on are both predicted to collide, so the robot steps aside (han.sim.evade).
+  const auto o = sim::simulate(load("overtake.json"));
+  CHECK(o.reached_goal);
+  CHECK(o.collisions.empty());
+  REQUIRE_FALSE(o.evasions.empty());
+  CHECK(o.evasions[0].t == 0.125);
+  CHECK(o.evasions[0].refuge == grid::Cell{0, 2});
+  CHECK(o.unavoidable.empty());
+  bool evading = false;
+  for (const auto& q : o.trajectory) evading = evading || q.state == sim::RobotState::evade;
+  CHECK(evading);
+  // Head-on in a dead-end corridor one cell wide: no detour, no refuge at the end; the rules must
+  // say so before the collision, and every collision is reported outside the guarantee.
+  const auto d = sim::simulate(load("deadend.json"));
+  REQUIRE_FALSE(d.collisions.empty());
+  REQUIRE_FALSE(d.unavoidable.empty());
+  CHECK(d.unavoidable.front().t <= d.collisions.front().t);
+  bool trapped = false;
+  for (const auto& u : d.unavoidable) trapped = trapped || u.reason == "trapped";
+  CHECK(trapped);
+  for (const auto& c : d.collisions) CHECK(c.outside_guarantee == "unavoidable");
+  CHECK(sim::to_json(d, false).at("unexplained_collisions") == 0);
+  // The same head-on encounter in a corridor that opens into a room behind the robot: the robot
+  // retreats to a refuge in the room and lets the obstacle pass.
+  const auto m = sim::simulate(load("room.json"));
+  CHECK(m.reached_goal);
+  CHECK(m.collisions.empty());
+  CHECK(m.unavoidable.empty());
+  CHECK_FALSE(m.evasions.empty());
+}
+
+TEST_CASE("han.sim.safety: hand margins at the sample times", "[han-sim]") {
+  // golden han.sim.safety tcIds 2 and 4: head-on from rest, and a corner.
+  const std::vector<Vec2> line{{0, 0}, {10, 0}};
+  const auto h = sim::safety_margins(line, 0.0, 1.0, 1.0, 0.5, 1.0, rls::LinearMotion{-1.0, 5.0, 0.0, 0.0}, 0.0);
+  CHECK(h.wait == 4.0);
+  CHECK(h.go == 3.5);
+  CHECK(h.go_closing);
+  CHECK(h.samples == 3);
+  const std::vector<Vec2> corner{{0, 0}, {1, 0}, {1, 1}};
+  const auto c = sim::safety_margins(corner, 1.0, 1.0, 1.0, 0.75, 1.5, rls::LinearMotion{0.0, 1.0, 0.0, 1.0}, 0.0);
+  CHECK(c.wait == std::sqrt(2.0));
+  CHECK(c.go == 0.5);
+  CHECK(sim::polyline_point(corner, 1.5) == Vec2{1.0, 0.5});
+  CHECK(sim::polyline_point(corner, 5.0) == Vec2{1.0, 1.0});
+  CHECK(sim::polyline_point(corner, -1.0) == Vec2{0.0, 0.0});
+  CHECK_THROWS_AS(sim::safety_margins(line, 2.0, 1.0, 1.0, 0.5, 1.0, rls::LinearMotion{}, 0.0), DomainError);
+  CHECK_THROWS_AS(sim::polyline_point(std::vector<Vec2>{}, 1.0), DomainError);
+}
+
+TEST_CASE("han.sim.evade: the nearest refuge", "[han-sim]") {
+  // golden han.sim.evade tcIds 1-3.
+  const grid::Grid g(5, 3);
+  std::vector<std::uint8_t> band(15, 0);
+  for (const int x : {1, 2, 3}) band[static_cast<std::size_t>(5 + x)] = 1;
+  const std::vector<sim::RefugeSource> src{{grid::Cell{2, 1}, 0.0}};
+  const auto r = sim::find_refuge(g, src, band, grid::CornerPolicy::strict);
+  REQUIRE(r.found);
+  CHECK(r.path == std::vector<grid::Cell>{{2, 1}, {2, 0}});
+  CHECK(r.cost == 1.0);
+  CHECK(r.source == 0);
+  const grid::Grid line(3, 1);
+  const std::vector<std::uint8_t> all{1, 1, 1};
+  const std::vector<sim::RefugeSource> mid{{grid::Cell{1, 0}, 0.0}};
+  const auto none = sim::find_refuge(line, mid, all, grid::CornerPolicy::strict);
+  CHECK_FALSE(none.found);
+  CHECK(none.path.empty());
+  CHECK_THROWS_AS(sim::find_refuge(line, std::vector<sim::RefugeSource>{}, all, grid::CornerPolicy::strict), DomainError);
 }
 
 TEST_CASE("han.sim.scenario-format: errors name the JSON pointer", "[han-sim]") {
@@ -189,4 +294,79 @@ TEST_CASE("han.plan.iaco-astar: the static result is the global planner's path",
   CHECK_THROWS_AS(p->run(req), UsageError);
   req.params = planners::Json{{"global", "no-such-planner"}};
   CHECK_THROWS_AS(p->run(req), UsageError);
+}
+
+TEST_CASE("han.plan.iaco-astar: the global planner's parameters as <planner>.<name>", "[han-sim]") {
+  const planners::Planner* p = planners::find_planner("iaco-astar");
+  const planners::Planner* h = planners::find_planner("iaco-han");
+  REQUIRE(p != nullptr);
+  REQUIRE(h != nullptr);
+  // Every parameter of every other planner is declared with its default (so that `plan --set`
+  // validates it before the run), e.g. iaco-han.dead_end and astar.heuristic.
+  CHECK(p->defaults.at("global") == "iaco-han");
+  CHECK(p->defaults.at("iaco-han.dead_end") == h->defaults.at("dead_end"));
+  CHECK(p->defaults.at("astar.heuristic") == "octile");
+  CHECK_FALSE(p->defaults.contains("dead_end"));
+  CHECK(planners::global_param_name("iaco-han", "ants") == "iaco-han.ants");
+  const auto m = sim::random_map(3, 10, 0.3);
+  planners::Request req;
+  req.grid = &m.grid;
+  req.start = m.start;
+  req.goal = m.goal;
+  req.seed = 5;
+  req.params = planners::Json{{"iaco-han.dead_end", "die"}, {"iaco-han.ants", 7}, {"iaco-han.iterations", 4}};
+  const auto r = p->run(req);
+  planners::Request inner = req;
+  inner.params = planners::Json{{"dead_end", "die"}, {"ants", 7}, {"iterations", 4}};
+  const auto g = h->run(inner);
+  // The same run as iaco-han with the unprefixed parameters, and the parameters used printed back
+  // with the prefix (every one of iaco-han's).
+  CHECK(r.found == g.found);
+  CHECK(r.path == g.path);
+  CHECK(r.best_per_iteration == g.best_per_iteration);
+  CHECK(r.extra.at("global_extra").at("draws") == g.extra.at("draws"));
+  CHECK(r.params_used.at("global") == "iaco-han");
+  CHECK(r.params_used.at("iaco-han.dead_end") == "die");
+  CHECK(r.params_used.at("iaco-han.ants") == 7);
+  CHECK(r.params_used.size() == g.params_used.size() + 1);
+  // A parameter of a planner that is not the global one, or an unprefixed one, is refused.
+  req.params = planners::Json{{"astar.heuristic", "chebyshev"}};
+  CHECK_THROWS_AS(p->run(req), UsageError);
+  req.params = planners::Json{{"dead_end", "die"}};
+  CHECK_THROWS_AS(p->run(req), UsageError);
+  // Another global planner takes its own prefixed parameters.
+  req.params = planners::Json{{"global", "astar"}, {"astar.heuristic", "chebyshev"}};
+  const auto a = p->run(req);
+  CHECK(a.params_used.at("astar.heuristic") == "chebyshev");
+}
+
+namespace {
+std::size_t count(const std::string& text, const std::string& what) {
+  std::size_t n = 0;
+  for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+  return n;
+}
+}  // namespace
+
+TEST_CASE("han.sim.run: the SVG has one wait marker per wait and time marks", "[han-sim]") {
+  // spec/han-sim.md, CLI: one orange circle per wait interval with its duration (the side trace
+  // waits once, 4.75 s to 9.375 s, i.e. 37 steps: formerly 37 identical circles), and a time mark
+  // every 1 s on the robot's and the obstacle's tracks (arrival 16.625 s: marks 0, 1, ..., 16).
+  const sim::Scenario s = load("side.json");
+  const auto r = sim::simulate(s);
+  const std::string svg = io::svg_simulation(s, r);
+  CHECK(count(svg, "class=\"wait\"") == 1);
+  CHECK(count(svg, ">wait 4.6 s</text>") == 1);
+  // the robot stands still from 4.75 s to 9.375 s: its marks 5 ... 9 share one dot "5-9"
+  CHECK(count(svg, "class=\"time-mark\"") == 13);
+  CHECK(count(svg, ">5-9</text>") == 1);
+  CHECK(count(svg, "class=\"obstacle-time-mark\"") == 17);
+  CHECK(svg.find(">16</text>") != std::string::npos);
+  CHECK(svg.find("time marks every 1 s") != std::string::npos);
+  // The dead-end run (about 22 s): marks every 2 s; the overtaking run draws its evasion.
+  const sim::Scenario d = load("deadend.json");
+  const std::string dsvg = io::svg_simulation(d, sim::simulate(d));
+  CHECK(dsvg.find("time marks every 2 s") != std::string::npos);
+  const sim::Scenario o = load("overtake.json");
+  CHECK(count(io::svg_simulation(o, sim::simulate(o)), "class=\"evasion\"") == 1);
 }

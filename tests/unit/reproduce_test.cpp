@@ -1,5 +1,5 @@
 // spec: reproduce.stats, reproduce.judge, reproduce.quick, reproduce.curves, reproduce.run,
-// reproduce.shi2022.maps, reproduce.han.maps (spec/reproduce.md)
+// reproduce.shi2022.maps, reproduce.han.maps, reproduce.han.dynamic (spec/reproduce.md)
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -14,6 +14,8 @@
 #include "pathref/reproduce/runs.hpp"
 #include "pathref/reproduce/shi2022.hpp"
 #include "pathref/reproduce/stats.hpp"
+#include "pathref/rng/mt19937.hpp"
+#include "pathref/sim/motion.hpp"
 
 using namespace pathref;
 using V = std::vector<double>;
@@ -199,6 +201,37 @@ TEST_CASE("reproduce.han.maps: edges and ratios", "[reproduce]") {
   CHECK(reproduce::han_ratio(2, 3) == 0.7);
   CHECK(reproduce::han_ratio(0, 1) == 0.45);
   CHECK_THROWS_AS(reproduce::han_ratio(3, 3), DomainError);
+}
+
+TEST_CASE("reproduce.han.dynamic: the two scripted obstacles meet the path when the robot would", "[reproduce]") {
+  // A straight path along y = 0.5 from x = 0.5 to x = 20.5: arc s lies at (0.5 + s, 0.5), the
+  // direction is +x. The draws of seed 7, in the spec's order, give f1, side, v1, f2, v2.
+  std::vector<grid::Cell> path;
+  for (std::int64_t x = 0; x <= 20; ++x) path.push_back(grid::Cell{x, 0});
+  rng::Stream st(7);
+  const double f1 = 0.2 + (0.6 * st.next_double());
+  const double side = st.next_double() < 0.5 ? 1.0 : -1.0;
+  const double v1 = 0.25 + (0.75 * st.next_double());
+  const double f2 = 0.5 + (0.4 * st.next_double());
+  const double v2 = 0.25 + (0.75 * st.next_double());
+  const auto o = reproduce::han_dynamic_obstacles(path, 7);
+  REQUIRE(o.size() == 2);
+  const double T1 = sim::ramp_cruise_time(f1 * 20.0, 1.0, 1.0);
+  const double T2 = sim::ramp_cruise_time(f2 * 20.0, 1.0, 1.0);
+  // O1 crosses perpendicularly (velocity (0, side v1)) and is at (0.5 + f1 L, 0.5) at T1.
+  CHECK(o[0].velocity.x == 0.0);
+  CHECK(o[0].velocity.y == side * v1);
+  CHECK(o[0].position.x + o[0].velocity.x * T1 == Approx(0.5 + f1 * 20.0).margin(1e-12));
+  CHECK(o[0].position.y + o[0].velocity.y * T1 == Approx(0.5).margin(1e-12));
+  // O2 comes head-on (velocity (-v2, 0)) and is at (0.5 + f2 L, 0.5) at T2.
+  CHECK(o[1].velocity.x == -v2);
+  CHECK(o[1].velocity.y == 0.0);
+  CHECK(o[1].position.x + o[1].velocity.x * T2 == Approx(0.5 + f2 * 20.0).margin(1e-12));
+  CHECK(o[1].position.y == 0.5);
+  CHECK(o[0].radius == 0.3);
+  CHECK(f1 >= 0.2);
+  CHECK(f2 >= 0.5);
+  CHECK_THROWS_AS(reproduce::han_dynamic_obstacles(std::vector<grid::Cell>{grid::Cell{0, 0}}, 1), DomainError);
 }
 
 TEST_CASE("reproduce.markdown: numbers come from the document", "[reproduce]") {

@@ -2,7 +2,9 @@
 /// \file svg_sim.hpp
 /// The SVG of a simulation run, as Han's Figure 8: the grid map, the planned global path (dashed),
 /// the robot's executed trajectory (green), each moving obstacle's track (black, dotted) with its
-/// start marked, the places where the robot waited (orange circles) and the local detours (blue).
+/// start marked, one orange circle per wait interval labelled with its duration, the local detours
+/// (blue) and evasions (purple), and time marks along the robot's and the obstacles' tracks (every
+/// 1 s, or 2, 5, 10, ... s for long runs, so that at most 20 are labelled per track).
 /// Deterministic text (fixed decimals). Source: Han (IJACSA), Fig. 8. Spec: spec/han-sim.md#cli
 #include <string>
 

@@ -159,7 +159,11 @@ Config shi_iaco_nomin() {
 
 Config han_iaco() {
   Config c;
-  c.eta = Eta::inverse_distance;
+  // spec han.plan.iaco, Reading "eta" and "dead_end": the goal-directed eta and backtracking
+  // ants are the readings the paper's text supports best (inverse_distance and die remain
+  // selectable).
+  c.eta = Eta::goal_directed;
+  c.dead_end = DeadEnd::backtrack;
   c.selection = Selection::pseudo_random;
   c.corner = Corner::han;
   c.evaporation = Evaporation::han_stepped;

@@ -149,7 +149,8 @@ struct Config {
 /// Spec: shi2022.plan.iaco
 [[nodiscard]] Config shi_iaco_nomin();
 /// Defaults of planner `iaco-han` (spec han.plan.iaco): 50 ants, 50 cycles, alpha 4, beta 8,
-/// rho(0) 0.7, selection pseudo_random, corner han, evaporation han_stepped, deposit han_elite,
+/// rho(0) 0.7, eta goal_directed, dead_end backtrack (the readings of han.plan.iaco),
+/// selection pseudo_random, corner han, evaporation han_stepped, deposit han_elite,
 /// and the chosen constants of han.params (gamma, omega_i, epsilon, h, Q, tau0 = 1, tau_min,
 /// a, b, rho_min). Spec: han.plan.iaco
 [[nodiscard]] Config han_iaco();

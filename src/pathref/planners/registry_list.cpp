@@ -25,7 +25,8 @@ std::vector<Planner> all_planners() {
   v.push_back(make_hybrid_ga_aco_planner());
   v.push_back(make_iha_planner());
   // IACO-A* (spec/han-sim.md): added by the simulation module
-  v.push_back(make_iaco_astar_planner());
+  // (its parameters are those of the planners above, as <planner>.<name>)
+  v.push_back(make_iaco_astar_planner(v));
   return v;
 }
 }  // namespace pathref::planners

@@ -14,6 +14,7 @@
 
 #include "pathref/grid/grid.hpp"
 #include "pathref/reproduce/report.hpp"
+#include "pathref/sim/simulate.hpp"
 
 namespace pathref::reproduce {
 
@@ -43,8 +44,21 @@ struct HanVariant {
   std::string planner;
   nlohmann::json params;
   std::string label;
+  std::vector<std::int64_t> only_edges;  ///< run only on maps of these edges; empty: every edge
 };
 [[nodiscard]] const std::vector<HanVariant>& han_variants();
+
+/// The two scripted moving obstacles of a dynamic run (reproduce.han.dynamic) on the cell path
+/// `path` (1 m cells), drawn from rng::Stream(seed) in this order: O1 (side) arc fraction
+/// f1 = 0.2 + 0.6 u, side = +1 if u < 0.5 else -1, speed 0.25 + 0.75 u; O2 (frontal) fraction
+/// f2 = 0.5 + 0.4 u, speed 0.25 + 0.75 u. O1 crosses the path at arc f1 L perpendicular to its piece
+/// (normal side * (-d.y, d.x)), O2 comes towards the robot along the piece's direction d at arc
+/// f2 L; each starts speed * T away from its point, T = sim::ramp_cruise_time(f L, 1, 1), so it
+/// reaches the point when the robot would without obstacles. Radius 0.3 m.
+/// Source: Han (IJACSA) Sec. IV ("two DO ... initial positions appear randomly"), Fig. 8; the
+/// placement is pathref's. Spec: reproduce.han.dynamic. Pre: path.size() >= 2 (DomainError).
+[[nodiscard]] std::vector<sim::MovingObstacle> han_dynamic_obstacles(const std::vector<grid::Cell>& path,
+                                                                     std::uint32_t seed);
 
 /// Runs the protocol and returns the reproduce.json document. Spec: reproduce.han.protocol.
 /// Pre: edges non-empty, each in [2, 1000]; maps_per_edge in [1, 100]; runs, sweep_runs in

@@ -203,7 +203,8 @@ namespace pathref::reproduce {
 
 Json run_series(const std::string& name, const Json& params, const grid::Grid& g, grid::Cell start,
                 grid::Cell goal, grid::CornerPolicy policy, std::uint32_t seed, std::int64_t runs,
-                bool quick, const Progress& progress, const std::string& context) {
+                bool quick, const Progress& progress, const std::string& context,
+                std::vector<RunRecord>* records_out) {
   require(runs >= 1, "run_series: runs must be >= 1");
   const planners::Planner* p = available(name);
   if (p == nullptr) {
@@ -269,6 +270,7 @@ Json run_series(const std::string& name, const Json& params, const grid::Grid& g
   if (progress)
     progress(fmt::format("{}: {} x{} done in {:.1f} s ({} found)", context, name, runs, secs,
                          out["summary"]["found"].get<std::int64_t>()));
+  if (records_out != nullptr) *records_out = std::move(records);
   return out;
 }
 

@@ -90,11 +90,14 @@ struct RunRecord {
 /// "mean_iteration_curve", "phase_offset", and for hybrids (phase_offset > 0)
 /// "mean_best_curve_phase", "mean_iteration_curve_phase"}. A planner that is not registered gives {"available": false,
 /// "reason": "planner 'NAME' is not available in this build"}. Runs use seeds seed, seed + 1, ...
+/// With `records_out`, the runs themselves (paths included) are also handed back, in run order
+/// (Han's dynamic protocol simulates each run's path, reproduce.han.dynamic).
 /// Spec: reproduce.run. Pre: runs >= 1.
 [[nodiscard]] Json run_series(const std::string& name, const Json& params, const grid::Grid& g,
                               grid::Cell start, grid::Cell goal, grid::CornerPolicy policy,
                               std::uint32_t seed, std::int64_t runs, bool quick,
-                              const Progress& progress, const std::string& context);
+                              const Progress& progress, const std::string& context,
+                              std::vector<RunRecord>* records_out = nullptr);
 
 /// The per-run values of `key` ("length", "turns", "converged_at", ...) of a run_series result,
 /// skipping nulls, in run order.

@@ -13,6 +13,7 @@
 #include <string_view>
 #include <vector>
 
+#include "pathref/equations/rls.hpp"
 #include "pathref/grid/grid.hpp"
 
 namespace pathref::sim {
@@ -56,7 +57,10 @@ struct Classification {
   std::int64_t piece = -1;   ///< the first robot piece attaining it (0-based)
   double cos_angle = 0.0;    ///< cos of the angle between that piece and the obstacle motion (0 if static)
   bool obstacle_static = false;  ///< the predicted segment has zero length
-  bool robot_inside = false;     ///< point_ray_distance(robot[0], p, q) < clearance: the robot is on the obstacle's future path
+  /// point_ray_distance(robot[0], p, q) < clearance: the robot stands on the obstacle's whole
+  /// future path (the ray from p through q, beyond the horizon). Reported for information; the
+  /// simulation's decisions use the timed margins of han.sim.safety instead.
+  bool robot_inside = false;
 };
 
 /// cos 135 deg = -sqrt(2)/2, the default threshold between side and frontal.
@@ -84,10 +88,71 @@ inline constexpr double default_frontal_cos = -0.70710678118654757;  // -fl(sqrt
 [[nodiscard]] std::vector<grid::Cell> swept_cells(const grid::Grid& g, Vec2 p, Vec2 q,
                                                   double clearance);
 
+/// The cells an obstacle's whole future path blocks for an evasion (han.sim.evade): every cell whose
+/// centre is at distance < clearance + sqrt(2)/2 from the ray from p through q
+/// (point_ray_distance; p == q: the point p). Listed by increasing cell index.
+/// Source: pathref. Spec: han.sim.evade. Pre: finite inputs, clearance > 0 (DomainError).
+[[nodiscard]] std::vector<grid::Cell> swept_ray_cells(const grid::Grid& g, Vec2 p, Vec2 q, double clearance);
+
 /// The local target of a frontal detour: the global-path index just after the last blocked cell at
 /// or after `from` (blocked[i] for global_path[i]); `from` itself when none is blocked; -1 when the
 /// goal (the last cell) is blocked. Source: Han (IJACSA), Sec. IV ("generates local target points");
 /// pathref. Spec: han.sim.detour. Pre: blocked.size() == path size; 0 <= from < size (DomainError).
 [[nodiscard]] std::int64_t local_target(std::span<const std::uint8_t> blocked, std::int64_t from);
+
+/// The point at arc length L along the polyline pts[0] ... pts[m] (piece lengths
+/// sqrt((dx*dx) + (dy*dy)) in order): on the piece k where acc_k <= L <= acc_k + len_k (the first
+/// such), pts[k] + ((L - acc_k) / len_k) * (pts[k+1] - pts[k]) componentwise; pts[0] for L <= 0
+/// and pts[m] beyond the end (and for a one-point polyline).
+/// Source: pathref. Spec: han.sim.safety. Pre: pts non-empty (DomainError).
+[[nodiscard]] Vec2 polyline_point(std::span<const Vec2> pts, double L);
+
+/// The two predicted margins of han.sim.safety against one obstacle over the horizon.
+struct Margins {
+  double wait = 0.0;         ///< min_j |pts[0] - o(s_j)|: the robot stays where it is
+  double go = 0.0;           ///< min_j |R(s_j) - o(s_j)|: the robot drives along pts from speed v0
+  /// The driving robot still closes in on the obstacle at the end of the horizon: the last sampled
+  /// distance |R(s_J) - o(s_J)| is smaller than the one before (false with a single sample).
+  bool go_closing = false;
+  std::int64_t samples = 0;  ///< number of sample times s_j
+};
+
+/// Han's rules with a time check (pathref's addition, spec han.sim.safety): sample times
+/// s_j = double(j) * dt for j = 0, 1, ... while s_j <= horizon; the obstacle's predicted position
+/// o(s_j) = rls::position(m, tau + s_j) (Eq. 9 with the current RLS estimate, tau the RLS clock
+/// now); the robot at R(s_j) = polyline_point(pts, d_j), d_0 = 0, d_j = motion_step(v0, s_j,
+/// v_max, accel).distance (han.sim.motion from the current speed, no stop); distances
+/// sqrt((dx*dx) + (dy*dy)). pts is the robot's path ahead from its position pts[0], ending where it
+/// would stop (the goal, a refuge) or at the end of the lookahead.
+/// Source: pathref (Han, Sec. III.B, describes no timing). Spec: han.sim.safety.
+/// Pre: pts non-empty, finite; dt, horizon, v_max, accel finite > 0; 0 <= v0 <= v_max; tau finite
+/// (DomainError). Golden: golden/han-sim/han.sim.safety.json
+[[nodiscard]] Margins safety_margins(std::span<const Vec2> pts, double v0, double v_max, double accel,
+                                     double dt, double horizon, const rls::LinearMotion& m, double tau);
+
+/// A start of the refuge search: a cell and the arc length the robot needs to reach it.
+struct RefugeSource {
+  grid::Cell cell;
+  double cost = 0.0;
+};
+
+/// The result of find_refuge.
+struct Refuge {
+  bool found = false;
+  std::vector<grid::Cell> path;  ///< source cell ... refuge (adjacent cells), empty if !found
+  std::int64_t source = -1;      ///< index into the sources of the path's first cell
+  double cost = 0.0;             ///< the source's cost plus the step costs, summed in path order
+};
+
+/// The nearest refuge (spec han.sim.evade): multi-source Dijkstra on the free cells of g under
+/// `policy` (moves grid::neighbours, costs grid::step_cost), started from every source with its
+/// cost (a cell listed twice keeps the lower cost, the first on ties), the queue ordered by
+/// (g, cell index), a parent replaced only on a strictly smaller g; the first settled cell with
+/// band[index] == 0 is the refuge. Cells of the band may be crossed.
+/// Blocked sources are skipped (g is the map with the obstacles' bodies blocked, han.sim.evade).
+/// Source: pathref. Spec: han.sim.evade. Pre: band.size() == cell count; sources non-empty, in
+/// bounds, costs finite >= 0 (DomainError). Golden: golden/han-sim/han.sim.evade.json
+[[nodiscard]] Refuge find_refuge(const grid::Grid& g, std::span<const RefugeSource> sources,
+                                 std::span<const std::uint8_t> band, grid::CornerPolicy policy);
 
 }  // namespace pathref::sim

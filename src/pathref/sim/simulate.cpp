@@ -1,5 +1,6 @@
 #include "pathref/sim/simulate.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <limits>
@@ -280,6 +281,7 @@ std::string_view to_string(RobotState s) noexcept {
   switch (s) {
     case RobotState::move: return "move";
     case RobotState::wait: return "wait";
+    case RobotState::evade: return "evade";
     case RobotState::arrive: return "arrive";
   }
   return "move";
@@ -293,15 +295,18 @@ double path_length(const std::vector<grid::Cell>& p) {
   return len;
 }
 
-/// The robot's plan: cells (adjacent), the global index of each (-1 on a detour), and where the
-/// robot is: on the piece seg -> seg+1 at arc offset off (0 <= off < piece length).
+/// The robot's plan: cells (adjacent), the global index of each (-1 on a detour or evasion), where
+/// the robot is (on the piece seg -> seg+1 at arc offset off, 0 <= off < piece length), and the
+/// cell where it stops: the last (the goal), or the refuge of an evasion (han.sim.evade).
 struct Plan {
   std::vector<grid::Cell> cells;
   std::vector<std::int64_t> gidx;
   std::size_t seg = 0;
   double off = 0.0;
+  std::size_t stop = 0;
 
   [[nodiscard]] bool at_end() const { return seg + 1 >= cells.size(); }
+  [[nodiscard]] bool at_stop() const { return seg >= stop; }
   [[nodiscard]] double piece(std::size_t i) const { return grid::step_cost(cells[i], cells[i + 1]); }
   [[nodiscard]] Vec2 at(std::size_t i, double f) const {
     const Vec2 a = centre(cells[i]);
@@ -311,23 +316,26 @@ struct Plan {
     return Vec2{a.x + (r * (b.x - a.x)), a.y + (r * (b.y - a.y))};
   }
   [[nodiscard]] Vec2 position() const { return at_end() ? centre(cells.back()) : at(seg, off); }
-  [[nodiscard]] double remaining() const {
-    if (at_end()) return 0.0;
+  /// Arc length from the robot to cell `last` (>= seg) along the plan.
+  [[nodiscard]] double remaining_to(std::size_t last) const {
+    if (seg >= last) return 0.0;
     double r = piece(seg) - off;
-    for (std::size_t j = seg + 1; j + 1 < cells.size(); ++j) r += piece(j);
+    for (std::size_t j = seg + 1; j < last; ++j) r += piece(j);
     return r;
   }
-  /// han.sim.step: the polyline from the robot over arc length L (truncated at the goal).
-  [[nodiscard]] std::vector<Vec2> lookahead(double L) const {
+  [[nodiscard]] double remaining() const { return remaining_to(cells.size() - 1); }
+  /// han.sim.step: the polyline from the robot over arc length L along the plan, truncated at cell
+  /// `last` (the goal for the classification, the stop cell for the safety margins).
+  [[nodiscard]] std::vector<Vec2> lookahead(double L, std::size_t last) const {
     std::vector<Vec2> pts{position()};
-    if (at_end()) return pts;
+    if (seg >= last) return pts;
     double acc = piece(seg) - off;
     if (acc >= L) {
       pts.push_back(at(seg, off + L));
       return pts;
     }
     pts.push_back(centre(cells[seg + 1]));
-    for (std::size_t j = seg + 1; j + 1 < cells.size(); ++j) {
+    for (std::size_t j = seg + 1; j < last; ++j) {
       const double len = piece(j);
       if (acc + len >= L) {
         pts.push_back(at(j, L - acc));
@@ -338,6 +346,7 @@ struct Plan {
     }
     return pts;
   }
+  [[nodiscard]] std::vector<Vec2> lookahead(double L) const { return lookahead(L, cells.size() - 1); }
   void advance(double ds) {
     while (ds > 0.0 && !at_end()) {
       const double r = piece(seg) - off;
@@ -421,6 +430,7 @@ SimResult simulate(const Scenario& s) {
   Plan plan;
   plan.cells = gp.path;
   for (std::size_t i = 0; i < gp.path.size(); ++i) plan.gidx.push_back(static_cast<std::int64_t>(i));
+  plan.stop = plan.cells.size() - 1;
   const std::size_t n_obs = s.obstacles.size();
   std::vector<Tracker> trackers(n_obs);
   res.obstacle_tracks.assign(n_obs, {});
@@ -428,11 +438,24 @@ SimResult simulate(const Scenario& s) {
   const double look = s.speed * s.horizon;
   double v = 0.0;
   bool waiting = false;
+  bool evading = false;  // han.sim.evade: driving to the refuge plan.cells[plan.stop]
   Wait current_wait;
+  // Observations before this step's (for the "unobserved" collisions of han.sim.run).
+  std::vector<std::int64_t> samples_at_step(n_obs, 0);
 
   auto record = [&](double t, RobotState st) {
     res.trajectory.push_back(Sample{t, plan.position(), v, st});
     for (std::size_t o = 0; o < n_obs; ++o) res.obstacle_tracks[o].push_back(true_position(s.obstacles[o], t));
+  };
+  auto clearance_of = [&](std::size_t o) { return (s.robot_radius + s.obstacles[o].radius) + s.margin; };
+  // Ground-truth collision check of one motion p0 -> p1 over [ta, tb] (han.sim.step, step 6).
+  auto check = [&](double t_step, Vec2 p0, Vec2 p1, double ta, double tb) {
+    for (std::size_t o = 0; o < n_obs; ++o) {
+      const double d = closest_approach(p0, p1, true_position(s.obstacles[o], ta), true_position(s.obstacles[o], tb));
+      if (d < s.robot_radius + s.obstacles[o].radius)
+        res.collisions.push_back(Collision{t_step, static_cast<std::int64_t>(o), d,
+                                           samples_at_step[o] < 2 ? "unobserved" : ""});
+    }
   };
 
   if (plan.at_end()) {
@@ -475,78 +498,215 @@ SimResult simulate(const Scenario& s) {
       } else {
         tr.est = rls::rls_step(tr.est, t - tr.t0, z.x, z.y, s.lambda);
       }
+      samples_at_step[o] = tr.samples;
     }
     // 2. classify every predicted obstacle against the lookahead ------------------------------
     const std::vector<Vec2> ahead = plan.lookahead(look);
     std::vector<std::int64_t> frontal, side, conflicting;
     std::vector<std::pair<Vec2, Vec2>> predicted(n_obs);
-    bool inside = false;  // the robot is on the future path of a conflicting obstacle
+    std::vector<rls::LinearMotion> motion(n_obs);
+    std::vector<double> clock(n_obs, 0.0);
     for (std::size_t o = 0; o < n_obs; ++o) {
       const Tracker& tr = trackers[o];
       if (tr.samples < 2) continue;
-      const rls::LinearMotion m{tr.est.A(0), tr.est.A(1), tr.est.B(0), tr.est.B(1)};
-      const rls::Position a = rls::position(m, t - tr.t0);
-      const rls::Position b = rls::position(m, (t - tr.t0) + s.horizon);
+      motion[o] = rls::LinearMotion{tr.est.A(0), tr.est.A(1), tr.est.B(0), tr.est.B(1)};
+      clock[o] = t - tr.t0;
+      const rls::Position a = rls::position(motion[o], clock[o]);
+      const rls::Position b = rls::position(motion[o], clock[o] + s.horizon);
       predicted[o] = {Vec2{a.x, a.y}, Vec2{b.x, b.y}};
-      const double clearance = (s.robot_radius + s.obstacles[o].radius) + s.margin;
-      const Classification c = classify(ahead, predicted[o].first, predicted[o].second, clearance, s.frontal_cos);
+      const Classification c =
+          classify(ahead, predicted[o].first, predicted[o].second, clearance_of(o), s.frontal_cos);
       const auto id = static_cast<std::int64_t>(o);
       if (c.kind == Encounter::none) continue;
       (c.kind == Encounter::frontal ? frontal : side).push_back(id);
       conflicting.push_back(id);
-      inside = inside || c.robot_inside;
     }
-    // 3. decide --------------------------------------------------------------------------------
-    bool wait_now = false;
-    if (!frontal.empty()) {
-      ++res.frontal_decisions;
-      bool replanned = false;
-      const std::size_t ps = plan.off > 0.0 ? plan.seg + 1 : plan.seg;
-      const grid::Cell from_cell = plan.cells[ps];
-      std::int64_t from = -1;
-      for (std::size_t i = ps; i < plan.cells.size() && from < 0; ++i) from = plan.gidx[i];
-      grid::Grid blocked = s.grid;
-      std::vector<std::uint8_t> flags(gp.path.size(), 0);
+    // han.sim.safety: are waiting / driving on predicted clear of every conflicting obstacle?
+    // slack = the worst margin minus the clearance over the conflicting obstacles (>= 0: clear);
+    // escapes = driving on is clear and no obstacle is still closing in at the horizon's end.
+    struct Prediction {
+      double wait_slack = std::numeric_limits<double>::infinity();
+      double go_slack = std::numeric_limits<double>::infinity();
+      bool closing = false;
+    };
+    auto predict = [&] {
+      const std::vector<Vec2> pts = plan.lookahead(look, plan.stop);
+      Prediction pr;
       for (const std::int64_t o : conflicting) {
         const auto uo = static_cast<std::size_t>(o);
-        const double clearance = (s.robot_radius + s.obstacles[uo].radius) + s.margin;
-        for (const grid::Cell c : swept_cells(s.grid, predicted[uo].first, predicted[uo].second, clearance))
+        const Margins mg = safety_margins(pts, v, s.speed, s.accel, s.dt, s.horizon, motion[uo], clock[uo]);
+        pr.wait_slack = std::min(pr.wait_slack, mg.wait - clearance_of(uo));
+        pr.go_slack = std::min(pr.go_slack, mg.go - clearance_of(uo));
+        pr.closing = pr.closing || mg.go_closing;
+      }
+      return pr;
+    };
+    // The first plan cell the robot reaches (the next one when between cells) and the global index
+    // of the first plan cell at or after it that lies on the global path.
+    auto plan_start = [&] { return plan.off > 0.0 ? plan.seg + 1 : plan.seg; };
+    auto global_from = [&](std::size_t ps) {
+      std::int64_t from = -1;
+      for (std::size_t i = ps; i < plan.cells.size() && from < 0; ++i) from = plan.gidx[i];
+      return from;
+    };
+    auto band_of_conflicts = [&] {
+      grid::Grid blocked = s.grid;
+      for (const std::int64_t o : conflicting) {
+        const auto uo = static_cast<std::size_t>(o);
+        for (const grid::Cell c : swept_cells(s.grid, predicted[uo].first, predicted[uo].second, clearance_of(uo)))
           blocked.set_blocked(c, true);
       }
-      for (std::size_t i = 0; i < gp.path.size(); ++i) flags[i] = blocked.blocked(gp.path[i]) ? 1 : 0;
-      const std::int64_t target = from >= 0 ? local_target(flags, from) : -1;
-      if (target >= 0 && !blocked.blocked(from_cell)) {
-        const grid::Cell tcell = gp.path[static_cast<std::size_t>(target)];
-        if (!(tcell == from_cell)) {
-          const search::Outcome a = search::astar(blocked, from_cell, tcell, s.policy, heuristics::Heuristic::chebyshev);
-          if (a.found) {
-            Plan np;
-            if (plan.off > 0.0) {
-              np.cells.push_back(plan.cells[plan.seg]);
-              np.gidx.push_back(plan.gidx[plan.seg]);
+      return blocked;
+    };
+    // 3. decide --------------------------------------------------------------------------------
+    bool wait_now = false;
+    bool evade_now = false;
+    if (evading) {
+      if (conflicting.empty()) {
+        evading = false;  // the lookahead is clear: drive on through the refuge without stopping
+        plan.stop = plan.cells.size() - 1;
+      } else if (predict().go_slack < 0.0) {
+        evade_now = true;
+      }
+    } else if (!conflicting.empty()) {
+      bool replanned = false;
+      if (!frontal.empty()) {
+        ++res.frontal_decisions;
+        const std::size_t ps = plan_start();
+        const grid::Cell from_cell = plan.cells[ps];
+        const std::int64_t from = global_from(ps);
+        const grid::Grid blocked = band_of_conflicts();
+        std::vector<std::uint8_t> flags(gp.path.size(), 0);
+        for (std::size_t i = 0; i < gp.path.size(); ++i) flags[i] = blocked.blocked(gp.path[i]) ? 1 : 0;
+        const std::int64_t target = from >= 0 ? local_target(flags, from) : -1;
+        if (target >= 0 && !blocked.blocked(from_cell)) {
+          const grid::Cell tcell = gp.path[static_cast<std::size_t>(target)];
+          if (!(tcell == from_cell)) {
+            const search::Outcome a = search::astar(blocked, from_cell, tcell, s.policy, heuristics::Heuristic::chebyshev);
+            if (a.found) {
+              Plan np;
+              if (plan.off > 0.0) {
+                np.cells.push_back(plan.cells[plan.seg]);
+                np.gidx.push_back(plan.gidx[plan.seg]);
+              }
+              for (std::size_t i = 0; i + 1 < a.path.size(); ++i) {
+                np.cells.push_back(a.path[i]);
+                np.gidx.push_back(-1);
+              }
+              for (std::size_t i = static_cast<std::size_t>(target); i < gp.path.size(); ++i) {
+                np.cells.push_back(gp.path[i]);
+                np.gidx.push_back(static_cast<std::int64_t>(i));
+              }
+              np.seg = 0;
+              np.off = plan.off;
+              np.stop = np.cells.size() - 1;
+              plan = std::move(np);
+              res.replans.push_back(Replan{t, from_cell, tcell, target, a.path, frontal});
+              replanned = true;
             }
-            for (std::size_t i = 0; i + 1 < a.path.size(); ++i) {
-              np.cells.push_back(a.path[i]);
-              np.gidx.push_back(-1);
-            }
-            for (std::size_t i = static_cast<std::size_t>(target); i < gp.path.size(); ++i) {
-              np.cells.push_back(gp.path[i]);
-              np.gidx.push_back(static_cast<std::int64_t>(i));
-            }
-            np.seg = 0;
-            np.off = plan.off;
-            plan = std::move(np);
-            res.replans.push_back(Replan{t, from_cell, tcell, target, a.path, frontal});
-            replanned = true;
           }
         }
       }
-      wait_now = !replanned && !inside;
-    } else if (!side.empty()) {
-      wait_now = !inside;
+      if (!replanned) {
+        const Prediction pr = predict();
+        if (pr.wait_slack >= 0.0) wait_now = true;                     // the paper's side rule (and no detour)
+        else if (pr.go_slack < 0.0 || pr.closing) evade_now = true;  // else drive on if that escapes
+      }
+    }
+    if (evade_now) {
+      // han.sim.evade: the nearest cell off every conflicting obstacle's future path (the band of
+      // its ray), from either end of the robot's piece.
+      std::vector<std::uint8_t> band(static_cast<std::size_t>(s.grid.cell_count()), 0);
+      for (const std::int64_t o : conflicting) {
+        const auto uo = static_cast<std::size_t>(o);
+        for (const grid::Cell c : swept_ray_cells(s.grid, predicted[uo].first, predicted[uo].second, clearance_of(uo)))
+          if (s.grid.free(c)) band[static_cast<std::size_t>(s.grid.index(c))] = 1;
+      }
+      std::vector<RefugeSource> sources;
+      if (plan.off > 0.0) {
+        sources.push_back(RefugeSource{plan.cells[plan.seg], plan.off});
+        sources.push_back(RefugeSource{plan.cells[plan.seg + 1], plan.piece(plan.seg) - plan.off});
+      } else {
+        sources.push_back(RefugeSource{plan.cells[plan.seg], 0.0});
+      }
+      // The obstacles' bodies now are not crossed: cells whose centre is closer than
+      // r_robot + r_obstacle to the predicted position p (a robot there would touch the obstacle).
+      grid::Grid bodies = s.grid;
+      for (const std::int64_t o : conflicting) {
+        const auto uo = static_cast<std::size_t>(o);
+        const double touch = s.robot_radius + s.obstacles[uo].radius;
+        for (std::int64_t i = 0; i < s.grid.cell_count(); ++i) {
+          const grid::Cell c = s.grid.cell(i);
+          if (point_segment_distance(centre(c), predicted[uo].first, predicted[uo].first) < touch)
+            bodies.set_blocked(c, true);
+        }
+      }
+      const Refuge rf = find_refuge(bodies, sources, band, s.policy);
+      if (rf.found && evading && rf.path.back() == plan.cells[plan.stop]) {
+        // Still the nearest refuge: keep driving to it, although it is predicted to be late.
+        res.unavoidable.push_back(Unavoidable{t, conflicting, "late"});
+      } else if (rf.found) {
+        const bool was_evading = evading;
+        const std::int64_t from = global_from(plan_start());
+        const grid::Cell target = gp.path[static_cast<std::size_t>(from)];
+        const grid::Cell refuge = rf.path.back();
+        const bool refuge_is_goal = refuge == gp.path.back();
+        std::vector<grid::Cell> rejoin{refuge};
+        if (!refuge_is_goal && !(refuge == target)) {
+          const search::Outcome a = search::astar(s.grid, refuge, target, s.policy, heuristics::Heuristic::chebyshev);
+          require(a.found, "simulate: no way back from the refuge to the global path");
+          rejoin = a.path;
+        }
+        Plan np;
+        double off = 0.0;
+        if (plan.off > 0.0) {
+          // The other end of the robot's piece first, so that the robot starts on that piece.
+          const bool back = rf.source == 0;
+          const std::size_t other = back ? plan.seg + 1 : plan.seg;
+          np.cells.push_back(plan.cells[other]);
+          np.gidx.push_back(plan.gidx[other]);
+          off = back ? plan.piece(plan.seg) - plan.off : plan.off;
+        }
+        const bool reverses = plan.off > 0.0 && rf.source == 0;
+        const std::size_t src_cell = plan.off > 0.0 ? (rf.source == 0 ? plan.seg : plan.seg + 1) : plan.seg;
+        for (std::size_t i = 0; i < rf.path.size(); ++i) {
+          np.cells.push_back(rf.path[i]);
+          np.gidx.push_back(i == 0 ? plan.gidx[src_cell] : -1);
+        }
+        np.stop = np.cells.size() - 1;
+        if (refuge_is_goal) {
+          np.gidx.back() = static_cast<std::int64_t>(gp.path.size()) - 1;
+        } else {
+          for (std::size_t i = 1; i < rejoin.size(); ++i) {
+            np.cells.push_back(rejoin[i]);
+            np.gidx.push_back(-1);
+          }
+          np.gidx.back() = from;  // the rejoin's last cell (or the refuge itself) is global cell `from`
+          for (std::size_t i = static_cast<std::size_t>(from) + 1; i < gp.path.size(); ++i) {
+            np.cells.push_back(gp.path[i]);
+            np.gidx.push_back(static_cast<std::int64_t>(i));
+          }
+        }
+        np.seg = 0;
+        np.off = off;
+        plan = std::move(np);
+        evading = true;
+        // A new evasion, or one that turns back on the robot's piece, starts with a stop
+        // (han.sim.motion: stops are immediate); a changed refuge ahead keeps the speed.
+        if (!was_evading || reverses) v = 0.0;
+        res.evasions.push_back(Evasion{t, rf.path.front(), refuge, rf.path, refuge_is_goal ? refuge : target,
+                                       refuge_is_goal ? static_cast<std::int64_t>(gp.path.size()) - 1 : from,
+                                       conflicting});
+        if (predict().go_slack < 0.0) res.unavoidable.push_back(Unavoidable{t, conflicting, "late"});
+      } else {
+        res.unavoidable.push_back(Unavoidable{t, conflicting, "trapped"});
+        const Prediction pr = predict();
+        wait_now = pr.wait_slack >= pr.go_slack;  // the larger predicted slack; waiting on ties
+      }
     }
     // 4. act -----------------------------------------------------------------------------------
     const Vec2 p0 = plan.position();
+    const double t_next = static_cast<double>(k + 1) * s.dt;
     if (wait_now) {
       if (!waiting) {
         waiting = true;
@@ -555,11 +715,7 @@ SimResult simulate(const Scenario& s) {
       ++res.wait_steps;
       v = 0.0;
       record(t, RobotState::wait);
-      const double t1 = static_cast<double>(k + 1) * s.dt;
-      for (std::size_t o = 0; o < n_obs; ++o) {
-        const double d = closest_approach(p0, p0, true_position(s.obstacles[o], t), true_position(s.obstacles[o], t1));
-        if (d < s.robot_radius + s.obstacles[o].radius) res.collisions.push_back(Collision{t, static_cast<std::int64_t>(o), d});
-      }
+      check(t, p0, p0, t, t_next);
       continue;
     }
     if (waiting) {
@@ -568,27 +724,31 @@ SimResult simulate(const Scenario& s) {
       res.waits.push_back(current_wait);
       res.wait_time += t - current_wait.start;
     }
-    record(t, RobotState::move);
-    const MotionStep m = motion_step(v, s.dt, s.speed, s.accel, plan.remaining());
+    record(t, evading ? RobotState::evade : RobotState::move);
+    const MotionStep m = motion_step(v, s.dt, s.speed, s.accel, plan.remaining_to(plan.stop));
     plan.advance(m.distance);
+    const bool at_goal = m.arrived && plan.stop + 1 == plan.cells.size();
     if (m.arrived) {
-      plan.seg = plan.cells.size() - 1;
+      plan.seg = plan.stop;
       plan.off = 0.0;
     }
     res.distance += m.distance;
     v = m.v_end;
     const double t1 = t + m.time;
     const Vec2 p1 = plan.position();
-    for (std::size_t o = 0; o < n_obs; ++o) {
-      const double d = closest_approach(p0, p1, true_position(s.obstacles[o], t), true_position(s.obstacles[o], t1));
-      if (d < s.robot_radius + s.obstacles[o].radius) res.collisions.push_back(Collision{t, static_cast<std::int64_t>(o), d});
-    }
-    if (m.arrived) {
+    check(t, p0, p1, t, t1);
+    if (at_goal) {
       res.reached_goal = true;
       res.time = t1;
       record(t1, RobotState::arrive);
       res.steps = k + 1;
       break;
+    }
+    if (m.arrived) {  // at the refuge: stop there for the rest of the step
+      evading = false;
+      v = 0.0;
+      plan.stop = plan.cells.size() - 1;
+      check(t, p1, p1, t1, t_next);
     }
   }
   if (!res.reached_goal) res.steps = static_cast<std::int64_t>(std::ceil(res.time / s.dt));
@@ -596,6 +756,19 @@ SimResult simulate(const Scenario& s) {
   for (const Tracker& tr : trackers)
     res.estimates.push_back(tr.samples >= 2 ? std::vector<double>{tr.est.A(0), tr.est.A(1), tr.est.B(0), tr.est.B(1)}
                                             : std::vector<double>{0.0, 0.0, 0.0, 0.0});
+  // han.sim.run: collisions that an Unavoidable record foresaw are outside the guarantee.
+  for (Collision& c : res.collisions) {
+    if (!c.outside_guarantee.empty()) continue;
+    for (const Unavoidable& u : res.unavoidable) {
+      if (u.t > c.t || c.t - u.t > s.horizon) continue;
+      bool named = false;
+      for (const std::int64_t o : u.obstacles) named = named || o == c.obstacle;
+      if (named) {
+        c.outside_guarantee = "unavoidable";
+        break;
+      }
+    }
+  }
   return res;
 }
 
@@ -614,8 +787,23 @@ Json to_json(const SimResult& r, bool full) {
     replans.push_back({{"t", p.t}, {"from", grid::cell_to_json(p.from)}, {"target", grid::cell_to_json(p.target)},
                        {"target_index", p.target_index}, {"detour", grid::path_to_json(p.detour)},
                        {"obstacles", ids(p.obstacles)}});
+  Json evasions = Json::array();
+  for (const Evasion& e : r.evasions)
+    evasions.push_back({{"t", e.t}, {"from", grid::cell_to_json(e.from)}, {"refuge", grid::cell_to_json(e.refuge)},
+                        {"path", grid::path_to_json(e.path)}, {"target", grid::cell_to_json(e.target)},
+                        {"target_index", e.target_index}, {"obstacles", ids(e.obstacles)}});
+  Json unavoidable = Json::array();
+  for (const Unavoidable& u : r.unavoidable)
+    unavoidable.push_back({{"t", u.t}, {"obstacles", ids(u.obstacles)}, {"reason", u.reason}});
   Json cols = Json::array();
-  for (const Collision& c : r.collisions) cols.push_back({{"t", c.t}, {"obstacle", c.obstacle}, {"distance", c.distance}});
+  std::int64_t unexplained = 0;
+  for (const Collision& c : r.collisions) {
+    cols.push_back({{"t", c.t},
+                    {"obstacle", c.obstacle},
+                    {"distance", c.distance},
+                    {"outside_guarantee", c.outside_guarantee.empty() ? Json(false) : Json(c.outside_guarantee)}});
+    if (c.outside_guarantee.empty()) ++unexplained;
+  }
   Json out{{"format", "pathref-sim-result"},
            {"global_found", r.global_found},
            {"global_path", grid::path_to_json(r.global_path)},
@@ -623,11 +811,14 @@ Json to_json(const SimResult& r, bool full) {
            {"reached_goal", r.reached_goal},
            {"collided", !r.collisions.empty()},
            {"collisions", cols},
+           {"unexplained_collisions", unexplained},
            {"time", r.time},
            {"distance", r.distance},
            {"wait_time", r.wait_time},
            {"waits", waits},
            {"replans", replans},
+           {"evasions", evasions},
+           {"unavoidable", unavoidable},
            {"steps", r.steps},
            {"noise_draws", r.noise_draws},
            {"estimates", r.estimates}};

@@ -69,8 +69,9 @@ inline constexpr std::int64_t max_sim_steps = 1000000;
 [[nodiscard]] Scenario parse_scenario(std::string_view text, std::string_view file,
                                       const std::string& base_dir);
 
-/// The robot's state in one trajectory sample.
-enum class RobotState { move, wait, arrive };
+/// The robot's state in one trajectory sample: moving on its plan, waiting, moving on an evasion
+/// plan towards a refuge (han.sim.evade), or arrived at the goal.
+enum class RobotState { move, wait, evade, arrive };
 [[nodiscard]] std::string_view to_string(RobotState s) noexcept;
 
 struct Sample {
@@ -95,10 +96,32 @@ struct Replan {
   std::vector<std::int64_t> obstacles;  ///< frontal encounters that caused it
 };
 
+/// An evasion (han.sim.evade): the robot leaves the predicted bands for the nearest refuge.
+struct Evasion {
+  double t = 0.0;
+  grid::Cell from;                  ///< the first cell of the refuge path (a cell of the robot's piece)
+  grid::Cell refuge;                ///< the nearest cell outside every conflicting band
+  std::vector<grid::Cell> path;     ///< from ... refuge
+  grid::Cell target;                ///< where the plan rejoins the global path
+  std::int64_t target_index = 0;    ///< its index in the global path
+  std::vector<std::int64_t> obstacles;  ///< the conflicting obstacles
+};
+
+/// A step in which no action is predicted safe (han.sim.safety): outside the rules' guarantee.
+struct Unavoidable {
+  double t = 0.0;
+  std::vector<std::int64_t> obstacles;  ///< the conflicting obstacles
+  std::string reason;  ///< "trapped": no refuge reachable; "late": the refuge is not reached in time
+};
+
 struct Collision {
   double t = 0.0;  ///< start of the step in which it happened
   std::int64_t obstacle = 0;
   double distance = 0.0;
+  /// Outside the guarantee of han.sim.run: "unavoidable" (an Unavoidable naming this obstacle in
+  /// [t - horizon, t]), "unobserved" (the obstacle had fewer than two observations, so no
+  /// prediction), or "" (inside the guarantee: the rules should have prevented it).
+  std::string outside_guarantee;
 };
 
 struct SimResult {
@@ -109,6 +132,8 @@ struct SimResult {
   std::vector<std::vector<Vec2>> obstacle_tracks;  ///< true positions at each sample time
   std::vector<Wait> waits;
   std::vector<Replan> replans;
+  std::vector<Evasion> evasions;
+  std::vector<Unavoidable> unavoidable;
   std::vector<Collision> collisions;
   std::int64_t wait_steps = 0;         ///< steps spent waiting
   std::int64_t frontal_decisions = 0;  ///< frontal encounters seen (replans or blocked waits)

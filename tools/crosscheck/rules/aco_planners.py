@@ -89,7 +89,7 @@ DEFAULTS = {
                  "q0_origin": 1, "draw_u": "lazy", "h": 1.0, "tau_min": 0.01,
                  "bonus_edges": "best_path", "Q": 1.0, "tau0": 1.0, "a": 1.0, "b": 5.0,
                  "rho_min": 0.1, "spread_reference": "iteration_worst", "rho_timing": "next",
-                 "eta": "inverse_distance", "edge_sense": "directed", "dead_end": "die"},
+                 "eta": "goal_directed", "edge_sense": "directed", "dead_end": "backtrack"},
 }
 CHOICES = {"eta": ("inverse_distance", "goal_directed"), "edge_sense": ("directed", "undirected"),
            "dead_end": ("die", "backtrack"), "rho_reading": ("factor", "condition", "clamp"),
