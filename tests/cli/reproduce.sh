@@ -73,10 +73,19 @@ def table(marker):
 
 checked = 0
 if paper == "shi2022":
-    for key in ("simple", "complex", "shi6x6"):
+    # the main tables list the default series; each reading's table its planners and PLANNER@KEY
+    tables = [(key, key, [n for n in doc["results"][key] if "@" not in n]) for key in ("simple", "complex", "shi6x6")]
+    for rd in doc["protocol"]["readings"]:
+        for key in ("simple", "complex"):
+            tables.append((key, f"{key}-{rd['key']}", [n for p in rd["planners"] for n in (p, p + "@" + rd["key"])]))
+    every = {key: sorted(n for n in doc["results"][key]) for key in ("simple", "complex", "shi6x6")}
+    for key in ("simple", "complex"):
+        listed = set(n for k, _, names in tables if k == key for n in names)
+        assert sorted(listed) == every[key], (key, sorted(listed), every[key])
+    for key, marker, names in tables:
         res = doc["results"][key]
-        rows = table(key)
-        assert sorted(r[0] for r in rows) == sorted(f"`{n}`" for n in res), (key, [r[0] for r in rows])
+        rows = table(marker)
+        assert sorted(r[0] for r in rows) == sorted(f"`{n}`" for n in names), (marker, [r[0] for r in rows])
         for r in rows:
             series = res[r[0].strip("`")]
             if not series["available"]:
@@ -146,6 +155,15 @@ for r, c in zip(claim_rows, doc["claims"]):
     assert r[0] == c["id"] and r[3] == c["paper"] and r[4] == c["ours"], (r, c)
     assert r[5].strip("*") == c["verdict"], (r, c)
     assert c["verdict"] in ("holds", "does not hold", "cannot be tested")
+if paper == "shi2022":  # the claims under other readings (reproduce.shi2022.readings)
+    i = md.index("Summary under the other readings")
+    part = md[i:md.index("\n## ", i)]
+    rows = [[c.strip() for c in l.strip().strip("|").split("|")] for l in part.splitlines() if l.startswith("| ") and not l.startswith("| id") and not l.startswith("| ---")]
+    assert len(rows) == len(doc["reading_claims"]) > 0, (len(rows), len(doc["reading_claims"]))
+    suffixes = {rd["suffix"] for rd in doc["protocol"]["readings"]}
+    for r, c in zip(rows, doc["reading_claims"]):
+        assert r[0] == c["id"] and r[4] == c["ours"] and r[5].strip("*") == c["verdict"], (r, c)
+        assert c["id"][-1] in suffixes and "[reading: " in c["text"], c
 print(f"{paper}: {checked} result rows and {len(doc['claims'])} claims agree")
 PY
 }

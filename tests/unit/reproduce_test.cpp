@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <set>
 #include <vector>
 
 #include "pathref/core/error.hpp"
@@ -263,4 +264,46 @@ TEST_CASE("reproduce.markdown: verdict summary lists the ids per verdict", "[rep
   const std::string table = reproduce::md_claims(claims);
   CHECK(table.find("| B.2 | t | s | 1 | 2 | **does not hold** | r |") != std::string::npos);
   CHECK(table.find("| C.3 | t | s | 1 | — | cannot be tested | why |") != std::string::npos);
+}
+
+TEST_CASE("reproduce.shi2022.readings: planners re-run under each reading, claims re-judged", "[reproduce]") {
+  reproduce::ShiConfig cfg;
+  // 6x6 maps with one wall gap: the section 4.2 initialisation has feasible chains on both.
+  const grid::Grid g = grid::Grid::from_rows_top_first({"......", "......", "##.###", "......", "......", "......"});
+  cfg.simple = reproduce::ProtocolMap{"a.txt", g};
+  cfg.complex = reproduce::ProtocolMap{"b.txt", g};
+  cfg.runs = 2;
+  cfg.quick = true;
+  const reproduce::Json doc = reproduce::run_shi2022(cfg);
+  for (const auto& r : reproduce::shi2022_readings())
+    for (const auto& p : r.planners)
+      for (const char* key : {"simple", "complex"}) {
+        const reproduce::Json& s = doc.at("results").at(key).at(p + "@" + r.key);
+        INFO(p << "@" << r.key);
+        REQUIRE(s.at("available").get<bool>());
+        for (auto it = r.params.begin(); it != r.params.end(); ++it)
+          CHECK(s.at("params_used").at(it.key()) == it.value());
+        CHECK(s.at("summary").at("runs") == 2);
+      }
+  std::set<std::string> ids;
+  for (const reproduce::Json& c : doc.at("reading_claims")) ids.insert(c.at("id").get<std::string>());
+  // shift: the GA columns only (T3.1 = GA optimal length), never the hybrid's (T3.2)
+  CHECK(ids.count("T3.1s") == 1);
+  CHECK(ids.count("T4.10s") == 1);
+  CHECK(ids.count("E.2s") == 1);
+  CHECK(ids.count("T3.2s") == 0);
+  CHECK(ids.count("M.1s") == 0);
+  // length: both hybrids' columns, and the reductions that read IHA
+  CHECK(ids.count("T3.2l") == 1);
+  CHECK(ids.count("T3.3l") == 1);
+  CHECK(ids.count("R.4l") == 1);
+  CHECK(ids.count("T3.1l") == 0);
+  CHECK(ids.count("E.1l") == 0);  // IACO vs IACO*: no hybrid
+  // invlen: IHA only
+  CHECK(ids.count("T3.3f") == 1);
+  CHECK(ids.count("T3.2f") == 0);
+  CHECK(doc.at("protocol").at("readings").size() == reproduce::shi2022_readings().size());
+  const std::string md = reproduce::shi2022_markdown(doc, "fig", "r.json");
+  CHECK(md.find("## Readings that change the outcome") != std::string::npos);
+  CHECK(md.find("<!-- results:complex-shift -->") != std::string::npos);
 }

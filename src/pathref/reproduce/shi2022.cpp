@@ -265,11 +265,116 @@ Claim less_claim(const std::string& id, const std::string& text, const std::stri
   return c;
 }
 
+/// Every claim of Tables 3-5, §5.1 and §6 judged on `results` (the maps' series by planner
+/// name), in report order; the map claims M.1-M.2 are made by the caller.
+std::vector<Claim> paper_claims(const Json& results) {
+  std::vector<Claim> claims;
+  table_claims(claims, at_or_null(results, {"simple"}), "Table 3", true, "");
+  table_claims(claims, results.at("complex"), "Table 4", true, "");
+  {
+    Claim c;
+    c.id = "F8.1";
+    c.text = "A* makes 11 turns on the simple map";
+    c.source = "§5.1, text on Figure 8";
+    c.paper = "11";
+    const Json& v = at_or_null(results, {"simple", "astar", "summary", "turns", "min"});
+    c.ours = md_number(v, 0);
+    if (v.is_number()) {
+      c.rule = "equal";
+      c.verdict = matches_printed(v.get<double>(), "11") ? Verdict::holds : Verdict::fails;
+      c.note = "A*'s path among equally short ones depends on its tie-breaking (spec/search.md)";
+    } else {
+      c.verdict = Verdict::untestable;
+      c.note = unavailable_note(at_or_null(results, {"simple"}), {"astar"});
+    }
+    claims.push_back(c);
+  }
+  reduction_claims(claims, results);
+  int k = 0;
+  for (const std::string key : {"simple", "complex"})
+    for (const std::string other : {"ga", "hybrid-ga-aco"})
+      claims.push_back(less_claim(fmt::format("L.{}", ++k),
+                                  fmt::format("IHA's average path length is shorter than {}'s on the {} map",
+                                              planner_label(other), key),
+                                  key == "simple" ? "Table 3 and §5.1 on Figure 9" : "Table 4 and §5.2 on Figure 12",
+                                  at_or_null(results, {key}), "iha", other, "length"));
+  claims.push_back(less_claim("E.1",
+                              "without the lower limit ρ_min, IACO* stops improving and ends on longer paths than IACO",
+                              "§5.1, trial-and-error experiment, Figure 10", at_or_null(results, {"simple"}), "iaco-shi",
+                              "iaco-shi-nomin", "length"));
+  claims.push_back(less_claim("E.2",
+                              "without the upper limit P_m_max, IGA* deviates from the better path (longer final paths than IGA)",
+                              "§5.1, trial-and-error experiment, Figure 10", at_or_null(results, {"simple"}), "iga-shi",
+                              "iga-shi-nomax", "length"));
+  claims.push_back(less_claim("E.3", "IHA ends on shorter paths than IACO*", "§5.1, Figure 10",
+                              at_or_null(results, {"simple"}), "iha", "iaco-shi-nomin", "length"));
+  claims.push_back(less_claim("E.4", "IHA ends on shorter paths than IGA*", "§5.1, Figure 10",
+                              at_or_null(results, {"simple"}), "iha", "iga-shi-nomax", "length"));
+  if (results.contains("shi6x6"))
+    table_claims(claims, results.at("shi6x6"), "Table 5", false,
+                 "the paper's 6×6 obstacle layout is not published; pathref's shi6x6 is a reconstruction "
+                 "(spec/cli.md#builtin-maps) and the plan time of the physical vehicle is not defined");
+  return claims;
+}
+
+void append(std::vector<Claim>& to, const std::vector<Claim>& from) { to.insert(to.end(), from.begin(), from.end()); }
+
+/// The claims that read a planner of `r`, judged again on its runs under the reading (spec
+/// reproduce.shi2022.readings): `results` with each planner of r replaced by its "PLANNER@KEY"
+/// series. A claim reads a planner iff removing that planner's series changes the claim.
+std::vector<Claim> reading_claims(const Json& results, const ShiReading& r) {
+  Json view = results;
+  Json removed = results;
+  for (const char* key : {"simple", "complex"}) {
+    if (!view.contains(key)) continue;
+    for (const std::string& p : r.planners) {
+      view[key][p] = at_or_null(results, {key, p + "@" + r.key});
+      removed[key][p] = nullptr;
+    }
+  }
+  view.erase("shi6x6");
+  removed.erase("shi6x6");
+  const std::vector<Claim> base = paper_claims(removed);
+  const std::vector<Claim> under = paper_claims(view);
+  const std::vector<Claim> orig = paper_claims([&] { Json j = results; j.erase("shi6x6"); return j; }());
+  std::vector<Claim> out;
+  for (std::size_t i = 0; i < under.size(); ++i) {
+    const bool reads = claim_json(base[i]) != claim_json(orig[i]);
+    if (!reads) continue;
+    Claim c = under[i];
+    c.id += r.suffix;
+    c.text += " [reading: " + r.key + "]";
+    out.push_back(c);
+  }
+  return out;
+}
+
 }  // namespace
 
 const std::vector<std::string>& shi2022_planners() {
   static const std::vector<std::string> v = {"ga", "aco", "iaco-shi", "iga-shi", "hybrid-ga-aco", "iha",
                                              "iaco-shi-nomin", "iga-shi-nomax", "astar", "dijkstra"};
+  return v;
+}
+
+const std::vector<ShiReading>& shi2022_readings() {
+  static const std::vector<ShiReading> v = {
+      {"shift", "s",
+       "GA initialisation `init_reject = shift`: a blocked Eq. 9 mid-point is shifted to a free cell of its row, "
+       "as the widely copied MATLAB GA scripts do (shi2022.op.init; default `blocked`: the chain is rejected)",
+       {"ga", "iga-shi", "iga-shi-nomax"},
+       Json{{"init_reject", "shift"}}},
+      {"length", "l",
+       "`result_by = length`: the hybrids return the shortest path they evaluated, not the fittest "
+       "(shi2022.plan.ga, Reading \"The result\"; default `fitness`)",
+       {"hybrid-ga-aco", "iha"},
+       Json{{"result_by", "length"}}},
+      {"invlen", "f",
+       "IHA with `fitness = inverse_length` (Eq. 10) instead of the weighted Eq. 14–18, whose sums over nodes "
+       "reward longer paths (shi2022.eq14, Note)",
+       {"iha"},
+       Json{{"fitness", "inverse_length"}}},
+  };
   return v;
 }
 
@@ -335,6 +440,10 @@ Json run_shi2022(const ShiConfig& cfg) {
       res[name] = run_series(name, Json::object(), m->grid, start, goal, cfg.policy, cfg.seed,
                              deterministic ? 1 : cfg.runs, cfg.quick, cfg.progress, "shi2022 " + key);
     }
+    for (const ShiReading& r : shi2022_readings())  // reproduce.shi2022.readings
+      for (const std::string& name : r.planners)
+        res[name + "@" + r.key] = run_series(name, r.params, m->grid, start, goal, cfg.policy, cfg.seed, cfg.runs,
+                                             cfg.quick, cfg.progress, "shi2022 " + key);
     results[key] = res;
   }
   // Table 5: the physical 6x6 experiment on the reconstructed built-in map shi6x6.
@@ -386,54 +495,19 @@ Json run_shi2022(const ShiConfig& cfg) {
     }
     claims.push_back(c);
   }
-  table_claims(claims, results.at("simple"), "Table 3", true, "");
-  table_claims(claims, results.at("complex"), "Table 4", true, "");
-  {
-    Claim c;
-    c.id = "F8.1";
-    c.text = "A* makes 11 turns on the simple map";
-    c.source = "§5.1, text on Figure 8";
-    c.paper = "11";
-    const Json& v = at_or_null(results, {"simple", "astar", "summary", "turns", "min"});
-    c.ours = md_number(v, 0);
-    if (v.is_number()) {
-      c.rule = "equal";
-      c.verdict = matches_printed(v.get<double>(), "11") ? Verdict::holds : Verdict::fails;
-      c.note = "A*'s path among equally short ones depends on its tie-breaking (spec/search.md)";
-    } else {
-      c.verdict = Verdict::untestable;
-      c.note = unavailable_note(results.at("simple"), {"astar"});
-    }
-    claims.push_back(c);
-  }
-  reduction_claims(claims, results);
-  int k = 0;
-  for (const std::string key : {"simple", "complex"})
-    for (const std::string other : {"ga", "hybrid-ga-aco"})
-      claims.push_back(less_claim(fmt::format("L.{}", ++k),
-                                  fmt::format("IHA's average path length is shorter than {}'s on the {} map",
-                                              planner_label(other), key),
-                                  key == "simple" ? "Table 3 and §5.1 on Figure 9" : "Table 4 and §5.2 on Figure 12",
-                                  results.at(key), "iha", other, "length"));
-  claims.push_back(less_claim("E.1",
-                              "without the lower limit ρ_min, IACO* stops improving and ends on longer paths than IACO",
-                              "§5.1, trial-and-error experiment, Figure 10", results.at("simple"), "iaco-shi",
-                              "iaco-shi-nomin", "length"));
-  claims.push_back(less_claim("E.2",
-                              "without the upper limit P_m_max, IGA* deviates from the better path (longer final paths than IGA)",
-                              "§5.1, trial-and-error experiment, Figure 10", results.at("simple"), "iga-shi",
-                              "iga-shi-nomax", "length"));
-  claims.push_back(less_claim("E.3", "IHA ends on shorter paths than IACO*", "§5.1, Figure 10",
-                              results.at("simple"), "iha", "iaco-shi-nomin", "length"));
-  claims.push_back(less_claim("E.4", "IHA ends on shorter paths than IGA*", "§5.1, Figure 10",
-                              results.at("simple"), "iha", "iga-shi-nomax", "length"));
-  if (results.contains("shi6x6"))
-    table_claims(claims, results.at("shi6x6"), "Table 5", false,
-                 "the paper's 6×6 obstacle layout is not published; pathref's shi6x6 is a reconstruction "
-                 "(spec/cli.md#builtin-maps) and the plan time of the physical vehicle is not defined");
+  append(claims, paper_claims(results));
   Json cj = Json::array();
   for (const Claim& c : claims) cj.push_back(claim_json(c));
   doc["claims"] = cj;
+  Json rj = Json::array();
+  Json readings = Json::array();
+  for (const ShiReading& r : shi2022_readings()) {
+    readings.push_back(Json{{"key", r.key}, {"suffix", r.suffix}, {"label", r.label}, {"planners", r.planners},
+                            {"params", r.params}});
+    for (const Claim& c : reading_claims(results, r)) rj.push_back(claim_json(c));
+  }
+  doc["protocol"]["readings"] = readings;
+  doc["reading_claims"] = rj;
   Json prov = provenance_json(cfg.provenance);
   prov["total_wall_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   doc["provenance"] = prov;
@@ -602,6 +676,36 @@ std::string shi2022_markdown(const Json& doc, const std::string& figure_dir, con
        "the simple-map table above, the claims E.1–E.4 below.\n\n";
   s += fmt::format("![trial and error]({}/trial-error.svg)\n\n![trial and error, iteration means]({}/trial-error-iteration-mean.svg)\n\n",
                    figure_dir, figure_dir);
+  if (doc.contains("reading_claims")) {  // reproduce.shi2022.readings
+    s += "## Readings that change the outcome\n\n";
+    s += "The tables above use every planner's default reading. Where another reading named in the spec changes "
+         "what the paper's claims meet, the planners concerned were run again under it (same seeds, same maps); "
+         "the claims that read them are judged again below with a suffix on their ids. Nothing was tuned: each "
+         "reading is one the spec names, chosen before the runs.\n\n";
+    for (const Json& r : doc.at("protocol").at("readings")) {
+      const std::string rkey = r.at("key").get<std::string>();
+      s += fmt::format("### Reading `{}` (claim suffix `{}`)\n\n{}; `--set {}`.\n\n", rkey,
+                       r.at("suffix").get<std::string>(), r.at("label").get<std::string>(),
+                       [&] {
+                         std::string t;
+                         for (auto it = r.at("params").begin(); it != r.at("params").end(); ++it)
+                           t += (t.empty() ? "" : " ") + it.key() + "=" +
+                                (it.value().is_string() ? it.value().get<std::string>() : it.value().dump());
+                         return t;
+                       }());
+      std::vector<std::string> order;
+      for (const Json& p : r.at("planners")) {
+        order.push_back(p.get<std::string>());
+        order.push_back(p.get<std::string>() + "@" + rkey);
+      }
+      for (const std::string key : {"simple", "complex"})
+        if (doc.at("results").contains(key))
+          s += fmt::format("{} map:\n\n", key == "simple" ? "Simple" : "Complex") +
+               md_results_table(doc.at("results").at(key), order, key + "-" + rkey) + "\n";
+    }
+    s += "Summary under the other readings: " + md_verdict_summary(doc.at("reading_claims")) + "\n";
+    s += md_claims(doc.at("reading_claims")) + "\n";
+  }
   if (doc.at("results").contains("shi6x6")) {
     s += "## Physical experiment — Table 5 (cannot be tested)\n\n";
     s += "The paper's 6×6 platform layout is not published. pathref's built-in `shi6x6` is a reconstruction "

@@ -52,6 +52,20 @@ struct ShiConfig {
 /// The planners of the protocol, in report order. Spec: reproduce.shi2022.protocol.
 [[nodiscard]] const std::vector<std::string>& shi2022_planners();
 
+/// A spec reading that changes the outcome (spec reproduce.shi2022.readings): the planners it
+/// concerns are run a second time with `params`; their results are stored under
+/// "PLANNER@KEY" and the claims that read them are judged again with `suffix` on their ids.
+struct ShiReading {
+  std::string key;                    ///< "shift": results key suffix, "ga@shift"
+  std::string suffix;                 ///< claim id suffix, "s": "T4.1s"
+  std::string label;                  ///< the reading in words, for the report
+  std::vector<std::string> planners;  ///< the planners run under it, in report order
+  Json params;                        ///< the --set overrides that select it
+};
+
+/// The readings of reproduce.shi2022.readings, in report order.
+[[nodiscard]] const std::vector<ShiReading>& shi2022_readings();
+
 /// The endpoints of the MATLAB scripts on a W x H map: start = the first cell of the file's first
 /// row, goal = the last cell of its last row: (0, 0) and (W-1, H-1) in the paper orientation,
 /// (0, H-1) and (W-1, 0) in the file orientation. Spec: reproduce.shi2022.maps.
