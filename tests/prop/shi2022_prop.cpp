@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 #include <numbers>
+#include <optional>
 #include <vector>
 
 #include "pathref/core/error.hpp"
@@ -68,6 +69,37 @@ rc::Gen<std::vector<Cell>> gen_nodes_in(const grid::Grid& g, int min_n, int max_
 }
 
 }  // namespace
+
+TEST_CASE("prop_transition_weights_into_is_the_formula_bit_for_bit", "[shi2022][prop]") {
+  // Oracle: pow(tau, alpha) * pow(eta, beta) [* pow(omega, gamma)] written out here, against the
+  // precomputed-power form the colonies use (alpha = 1 skips pow there, never here).
+  rc::prop("transition_weights_into(tau, pow(eta, beta)) == the formula", [] {
+    const auto n = *rc::gen::inRange<std::size_t>(1, 9);
+    const auto tau = *rc::gen::container<std::vector<double>>(n, gen_weight());
+    const auto eta = *rc::gen::container<std::vector<double>>(n, gen_weight());
+    const auto omega = *rc::gen::container<std::vector<double>>(n, gen_weight());
+    const double alpha = *rc::gen::element(0.0, 1.0, 2.0, 4.0, 0.5);
+    const double beta = *rc::gen::element(0.0, 1.0, 7.0, 8.0);
+    const bool corner = *rc::gen::arbitrary<bool>();
+    const double gamma = *rc::gen::element(0.0, 1.0, 2.0);
+    std::vector<double> want(n);
+    bool finite = true;
+    for (std::size_t j = 0; j < n; ++j) {
+      want[j] = std::pow(tau[j], alpha) * std::pow(eta[j], beta);
+      if (corner) want[j] = want[j] * std::pow(omega[j], gamma);
+      finite = finite && std::isfinite(want[j]);
+    }
+    RC_PRE(finite);
+    std::vector<double> eta_pow(n);
+    for (std::size_t j = 0; j < n; ++j) eta_pow[j] = std::pow(eta[j], beta);
+    std::vector<double> got{42.0};  // a stale scratch buffer is overwritten, not appended to
+    const std::optional<aco::CornerFactor> cf =
+        corner ? std::optional<aco::CornerFactor>(aco::CornerFactor{omega, gamma}) : std::nullopt;
+    aco::transition_weights_into(tau, eta_pow, alpha, cf, got);
+    RC_ASSERT(got == want);
+    RC_ASSERT(aco::transition_weights(tau, eta, alpha, beta, cf) == want);
+  });
+}
 
 TEST_CASE("prop_transition_probabilities_non_negative_and_sum_to_one", "[shi2022][prop]") {
   rc::prop("p_r >= 0 and |sum p - 1| <= 2 n 2^-53", [] {

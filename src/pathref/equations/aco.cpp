@@ -13,29 +13,45 @@ namespace {
 bool finite_nonneg(double v) { return std::isfinite(v) && v >= 0.0; }
 }  // namespace
 
-std::vector<double> transition_weights(std::span<const double> tau, std::span<const double> eta,
-                                       double alpha, double beta,
-                                       std::optional<CornerFactor> corner) {
+void transition_weights_into(std::span<const double> tau, std::span<const double> eta_pow,
+                             double alpha, std::optional<CornerFactor> corner,
+                             std::vector<double>& out) {
   require(!tau.empty(), "transition weights need at least one allowed candidate");
-  require(tau.size() == eta.size(), "tau and eta must have one value per candidate");
-  require(finite_nonneg(alpha) && finite_nonneg(beta), "alpha and beta must be finite and >= 0");
+  require(tau.size() == eta_pow.size(), "tau and eta must have one value per candidate");
+  require(finite_nonneg(alpha), "alpha and beta must be finite and >= 0");
   if (corner) {
     require(corner->omega.size() == tau.size(), "omega must have one value per candidate");
     require(finite_nonneg(corner->gamma), "gamma must be finite and >= 0");
   }
-  std::vector<double> w;
-  w.reserve(tau.size());
+  out.resize(tau.size());
   for (std::size_t j = 0; j < tau.size(); ++j) {
     require(finite_nonneg(tau[j]), "tau must be finite and >= 0");
-    require(finite_nonneg(eta[j]), "eta must be finite and >= 0");
-    double v = std::pow(tau[j], alpha) * std::pow(eta[j], beta);
+    require(eta_pow[j] >= 0.0, "eta must be finite and >= 0");
+    // pow(tau, 1) is tau exactly for any pow with an error below one ulp (a faithful result
+    // must be the exact value when that is representable), so alpha = 1 skips the call and
+    // gives the same double (spec shi2022.eq2, "Evaluation").
+    double v = (alpha == 1.0 ? tau[j] : std::pow(tau[j], alpha)) * eta_pow[j];
     if (corner) {
       require(finite_nonneg(corner->omega[j]), "omega must be finite and >= 0");
       v = v * std::pow(corner->omega[j], corner->gamma);
     }
     require(std::isfinite(v), "a transition weight overflows");
-    w.push_back(v);
+    out[j] = v;
   }
+}
+
+std::vector<double> transition_weights(std::span<const double> tau, std::span<const double> eta,
+                                       double alpha, double beta,
+                                       std::optional<CornerFactor> corner) {
+  require(finite_nonneg(alpha) && finite_nonneg(beta), "alpha and beta must be finite and >= 0");
+  std::vector<double> eta_pow;
+  eta_pow.reserve(eta.size());
+  for (const double e : eta) {
+    require(finite_nonneg(e), "eta must be finite and >= 0");
+    eta_pow.push_back(std::pow(e, beta));
+  }
+  std::vector<double> w;
+  transition_weights_into(tau, eta_pow, alpha, corner, w);
   return w;
 }
 

@@ -39,6 +39,20 @@ struct CornerFactor {
                                                      double beta,
                                                      std::optional<CornerFactor> corner = std::nullopt);
 
+/// transition_weights with the heuristic powers given: w_j = tau_j^alpha * eta_pow_j
+/// (* omega_j^gamma), evaluated as (pow(tau, alpha) * eta_pow) * pow(omega, gamma) into `out`
+/// (resized; no allocation once its capacity suffices). With eta_pow_j = pow(eta_j, beta) the
+/// weights are the doubles of transition_weights bit for bit (transition_weights is this
+/// function after computing those powers). It exists because eta depends only on the move and
+/// the goal, so a colony computes pow(eta, beta) once per (cell, direction) instead of per move.
+/// Source: Shi et al. 2022, Eq. (2) numerator, doi:10.3389/fbioe.2022.905983; Han (IJACSA) Eq. (1).
+/// Spec: shi2022.eq2
+/// Pre: tau non-empty, eta_pow (and omega) of its size; tau, omega finite and >= 0, eta_pow >= 0;
+/// alpha (gamma) finite and >= 0; every weight finite (DomainError).
+void transition_weights_into(std::span<const double> tau, std::span<const double> eta_pow,
+                             double alpha, std::optional<CornerFactor> corner,
+                             std::vector<double>& out);
+
 /// Transition probabilities P_ij = w_j / sum_s w_s over the allowed set (Eq. 2):
 /// equations::proportional_probabilities(transition_weights(...)).
 /// Source: Shi et al. 2022, Eq. (2), Sec. 4.1, doi:10.3389/fbioe.2022.905983.

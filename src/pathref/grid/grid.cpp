@@ -80,17 +80,9 @@ std::vector<std::string> Grid::to_rows_top_first() const {
   return rows;
 }
 
-std::int64_t Grid::index(Cell c) const { return cell_index(c, width_, height_); }
+void Grid::throw_cell_outside() { throw DomainError("cell outside the grid"); }
 
-Cell Grid::cell(std::int64_t i) const { return index_cell(i, width_, height_); }
-
-bool Grid::blocked(Cell c) const {
-  return blocked_[static_cast<std::size_t>(index(c))] != 0;
-}
-
-bool Grid::free(Cell c) const noexcept {
-  return in_bounds(c) && blocked_[static_cast<std::size_t>(c.y * width_ + c.x)] == 0;
-}
+void Grid::throw_index_outside() { throw DomainError("cell index outside [0, W*H)"); }
 
 void Grid::set_blocked(Cell c, bool is_blocked) {
   blocked_[static_cast<std::size_t>(index(c))] = is_blocked ? 1 : 0;

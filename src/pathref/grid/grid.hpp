@@ -69,15 +69,24 @@ class Grid {
   }
   /// Cell index i = y * W + x: cell_index(c, W, H). Spec: grid.index.
   /// Pre: in_bounds(c) (DomainError). Post: 0 <= i < W * H.
-  [[nodiscard]] std::int64_t index(Cell c) const;
+  /// (Inline: the planners' inner loops call it; the dimensions were checked on construction.)
+  [[nodiscard]] std::int64_t index(Cell c) const {
+    if (!in_bounds(c)) [[unlikely]] throw_cell_outside();
+    return c.y * width_ + c.x;
+  }
   /// Inverse of index: index_cell(i, W, H) = (i mod W, floor(i / W)). Spec: grid.index.
   /// Pre: 0 <= i < W * H (DomainError). Post: index(cell(i)) == i.
-  [[nodiscard]] Cell cell(std::int64_t i) const;
+  [[nodiscard]] Cell cell(std::int64_t i) const {
+    if (i < 0 || i >= width_ * height_) [[unlikely]] throw_index_outside();
+    return Cell{i % width_, i / width_};
+  }
 
-  /// True for a blocked cell. Pre: in_bounds(c).
-  [[nodiscard]] bool blocked(Cell c) const;
+  /// True for a blocked cell. Pre: in_bounds(c) (DomainError).
+  [[nodiscard]] bool blocked(Cell c) const { return blocked_[static_cast<std::size_t>(index(c))] != 0; }
   /// In bounds and not blocked. Never throws: out-of-bounds cells are simply not free.
-  [[nodiscard]] bool free(Cell c) const noexcept;
+  [[nodiscard]] bool free(Cell c) const noexcept {
+    return in_bounds(c) && blocked_[static_cast<std::size_t>(c.y * width_ + c.x)] == 0;
+  }
   void set_blocked(Cell c, bool is_blocked);
   [[nodiscard]] std::int64_t blocked_count() const noexcept;
 
@@ -87,6 +96,10 @@ class Grid {
   static constexpr std::int64_t max_cells = std::int64_t{1} << 28;
 
  private:
+  /// The DomainErrors of index and cell (the messages of cell_index and index_cell).
+  [[noreturn]] static void throw_cell_outside();
+  [[noreturn]] static void throw_index_outside();
+
   std::int64_t width_;
   std::int64_t height_;
   std::vector<std::uint8_t> blocked_;

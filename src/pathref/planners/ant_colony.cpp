@@ -340,9 +340,15 @@ Run run(const planners::Request& req, const Config& cfg, rng::Stream& stream) {
   std::vector<double> lengths(m, 0.0);
   std::vector<grid::Cell> cell_path;
 
+  // pow(eta_ij, beta) of every move (cell, direction slot), computed on first use (-1: not yet):
+  // eta depends only on the move and the goal, so this is transition_weights' pow(eta, beta)
+  // evaluated once instead of per step (the same doubles; spec shi2022.eq2, aco::transition_weights_into).
+  std::vector<double> eta_pow(ucells * 8U, -1.0);
+
   // per-move scratch
   std::vector<double> w_tau;
   std::vector<double> w_eta;
+  std::vector<double> weights;
   std::vector<grid::Cell> cand_cells;
   std::vector<std::int64_t> cand_index;
 
@@ -397,10 +403,15 @@ Run run(const planners::Request& req, const Config& cfg, rng::Stream& stream) {
           const grid::Cell to = g.cell(arc.to);
           cand_index.push_back(arc.to);
           cand_cells.push_back(to);
-          w_tau.push_back(tau[static_cast<std::size_t>(cur) * 8U + static_cast<std::size_t>(arc.dir)]);
-          w_eta.push_back(cfg.eta == Eta::inverse_distance
-                              ? aco::eta_inverse_distance(cur_cell, to)
-                              : aco::eta_goal_directed(cur_cell, to, goal_cell));
+          const std::size_t slot = static_cast<std::size_t>(cur) * 8U + static_cast<std::size_t>(arc.dir);
+          w_tau.push_back(tau[slot]);
+          if (eta_pow[slot] < 0.0) {
+            const double eta = cfg.eta == Eta::inverse_distance ? aco::eta_inverse_distance(cur_cell, to)
+                                                                : aco::eta_goal_directed(cur_cell, to, goal_cell);
+            require(std::isfinite(eta) && eta >= 0.0, "eta must be finite and >= 0");
+            eta_pow[slot] = std::pow(eta, cfg.beta);
+          }
+          w_eta.push_back(eta_pow[slot]);
         }
         if (cand_index.empty()) {  // dead end
           if (cfg.dead_end == DeadEnd::die) {
@@ -414,16 +425,14 @@ Run run(const planners::Request& req, const Config& cfg, rng::Stream& stream) {
           }
           continue;
         }
-        std::vector<double> weights;
         if (cfg.corner == Corner::han) {
           std::optional<grid::Cell> prev;
           if (path.size() >= 2) prev = g.cell(path[path.size() - 2]);
           const std::vector<double> omega = corner::corner_factors(
               prev, cur_cell, cand_cells, cfg.omega_i, cfg.omega_form, cfg.at90);
-          weights = aco::transition_weights(w_tau, w_eta, cfg.alpha, cfg.beta,
-                                            aco::CornerFactor{omega, cfg.gamma});
+          aco::transition_weights_into(w_tau, w_eta, cfg.alpha, aco::CornerFactor{omega, cfg.gamma}, weights);
         } else {
-          weights = aco::transition_weights(w_tau, w_eta, cfg.alpha, cfg.beta);
+          aco::transition_weights_into(w_tau, w_eta, cfg.alpha, std::nullopt, weights);
         }
         std::size_t k = 0;
         if (cfg.selection == Selection::proportional) {
