@@ -37,21 +37,16 @@ bool has_blocked_neighbour(const grid::Grid& g, grid::Cell c) {
   return false;
 }
 
-ChainRepair reject(const char* why) {
-  ChainRepair r;
-  r.reason = why;
-  return r;
-}
-
 }  // namespace
 
-ChainRepair connect_chain(const grid::Grid& g, std::span<const grid::Cell> genes,
-                          grid::CornerPolicy policy, MidRounding rounding, InitReject rej) {
+std::string_view connect_chain_into(const grid::Grid& g, std::span<const grid::Cell> genes,
+                                   grid::CornerPolicy policy, MidRounding rounding, InitReject rej,
+                                   std::vector<grid::Cell>& p) {
   require(genes.size() >= 2, "a chain needs at least two genes (start and goal)");
   for (const grid::Cell c : genes) require(g.in_bounds(c), "a gene lies outside the grid");
   for (const grid::Cell c : genes)
-    if (g.blocked(c)) return reject("blocked_gene");
-  std::vector<grid::Cell> p(genes.begin(), genes.end());
+    if (g.blocked(c)) return "blocked_gene";
+  p.assign(genes.begin(), genes.end());
   std::size_t k = 0;
   std::int64_t inserted = 0;
   while (k + 1 < p.size()) {
@@ -63,7 +58,7 @@ ChainRepair connect_chain(const grid::Grid& g, std::span<const grid::Cell> genes
       continue;
     }
     if (d == 1) {
-      if (!grid::step_allowed(g, a, b, policy)) return reject("illegal_step");
+      if (!grid::step_allowed(g, a, b, policy)) return "illegal_step";
       ++k;
       continue;
     }
@@ -80,18 +75,23 @@ ChainRepair connect_chain(const grid::Grid& g, std::span<const grid::Cell> genes
           break;
         }
       }
-      if (!moved) return reject("blocked_insert");
-      if (++inserted > g.cell_count()) return reject("insert_limit");
+      if (!moved) return "blocked_insert";
+      if (++inserted > g.cell_count()) return "insert_limit";
     }
-    if (g.blocked(m)) return reject("blocked_insert");
-    if (rej == InitReject::near_obstacle && has_blocked_neighbour(g, m))
-      return reject("near_obstacle");
+    if (g.blocked(m)) return "blocked_insert";
+    if (rej == InitReject::near_obstacle && has_blocked_neighbour(g, m)) return "near_obstacle";
     p.insert(p.begin() + static_cast<std::ptrdiff_t>(k + 1), m);
   }
+  return "ok";
+}
+
+ChainRepair connect_chain(const grid::Grid& g, std::span<const grid::Cell> genes,
+                          grid::CornerPolicy policy, MidRounding rounding, InitReject rej) {
   ChainRepair r;
-  r.feasible = true;
-  r.path = std::move(p);
-  r.reason = "ok";
+  std::vector<grid::Cell> p;
+  r.reason = std::string(connect_chain_into(g, genes, policy, rounding, rej, p));
+  r.feasible = r.reason == "ok";
+  if (r.feasible) r.path = std::move(p);
   return r;
 }
 

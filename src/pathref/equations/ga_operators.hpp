@@ -61,6 +61,14 @@ struct ChainRepair {
                                         MidRounding rounding = MidRounding::floor,
                                         InitReject reject = InitReject::blocked);
 
+/// connect_chain writing the repaired path into `path` (overwritten; no allocation once its
+/// capacity suffices) and returning the reason ("ok" when feasible; `path` is then the repaired
+/// path, else unspecified). connect_chain is this function plus the copy; the GA initialisation
+/// calls it once per drawn chain. Spec: shi2022.op.init. Pre: as connect_chain.
+[[nodiscard]] std::string_view connect_chain_into(const grid::Grid& g, std::span<const grid::Cell> genes,
+                                                  grid::CornerPolicy policy, MidRounding rounding,
+                                                  InitReject reject, std::vector<grid::Cell>& path);
+
 /// One crossover point: position k in parent a and position j in parent b with a[k] == b[j].
 struct CrossPoint {
   std::size_t k = 0;

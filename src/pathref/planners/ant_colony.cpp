@@ -121,15 +121,26 @@ struct Arc {
   int dir;          ///< direction slot
 };
 
-/// The allowed moves of every free cell, from grid::neighbours (canonical order).
-std::vector<std::vector<Arc>> adjacency(const grid::Grid& g, grid::CornerPolicy policy) {
-  std::vector<std::vector<Arc>> adj(static_cast<std::size_t>(g.cell_count()));
+/// The allowed moves of every free cell, from grid::neighbours (canonical order), in one array:
+/// the moves of cell i are arcs[offset[i] .. offset[i+1]).
+struct Adjacency {
+  std::vector<std::size_t> offset;
+  std::vector<Arc> arcs;
+  [[nodiscard]] std::span<const Arc> of(std::int64_t i) const {
+    const auto u = static_cast<std::size_t>(i);
+    return std::span<const Arc>(arcs).subspan(offset[u], offset[u + 1] - offset[u]);
+  }
+};
+
+Adjacency adjacency(const grid::Grid& g, grid::CornerPolicy policy) {
+  Adjacency adj;
+  adj.offset.assign(static_cast<std::size_t>(g.cell_count()) + 1, 0);
   for (std::int64_t i = 0; i < g.cell_count(); ++i) {
     const grid::Cell c = g.cell(i);
-    if (!g.free(c)) continue;
-    for (const grid::Move& m : grid::neighbours(g, c, policy))
-      adj[static_cast<std::size_t>(i)].push_back(
-          Arc{g.index(m.to), direction(m.to.x - c.x, m.to.y - c.y)});
+    if (g.free(c))
+      for (const grid::Move& m : grid::neighbours(g, c, policy))
+        adj.arcs.push_back(Arc{g.index(m.to), direction(m.to.x - c.x, m.to.y - c.y)});
+    adj.offset[static_cast<std::size_t>(i) + 1] = adj.arcs.size();
   }
   return adj;
 }
@@ -323,7 +334,7 @@ Run run(const planners::Request& req, const Config& cfg, rng::Stream& stream) {
 
   const std::int64_t cells = g.cell_count();
   const auto ucells = static_cast<std::size_t>(cells);
-  const std::vector<std::vector<Arc>> adj = adjacency(g, req.policy);
+  const Adjacency adj = adjacency(g, req.policy);
   const std::int64_t start = g.index(req.start);
   const std::int64_t goal = g.index(req.goal);
   const grid::Cell goal_cell = req.goal;
@@ -349,6 +360,10 @@ Run run(const planners::Request& req, const Config& cfg, rng::Stream& stream) {
   std::vector<double> w_tau;
   std::vector<double> w_eta;
   std::vector<double> weights;
+  // per-iteration scratch of the deposit grouping
+  std::vector<std::size_t> slot_count;
+  std::vector<std::size_t> slot_fill;
+  std::vector<double> grouped;
   std::vector<grid::Cell> cand_cells;
   std::vector<std::int64_t> cand_index;
 
@@ -393,7 +408,7 @@ Run run(const planners::Request& req, const Config& cfg, rng::Stream& stream) {
       while (path.back() != goal) {
         const std::int64_t cur = path.back();
         const grid::Cell cur_cell = g.cell(cur);
-        const auto& arcs = adj[static_cast<std::size_t>(cur)];
+        const std::span<const Arc> arcs = adj.of(cur);
         w_tau.clear();
         w_eta.clear();
         cand_cells.clear();
@@ -532,16 +547,21 @@ Run run(const planners::Request& req, const Config& cfg, rng::Stream& stream) {
           deposits.emplace_back(static_cast<std::size_t>(p[s]) * 8U + static_cast<std::size_t>(7 - k), d);
       }
     }
-    std::stable_sort(deposits.begin(), deposits.end(),
-                     [](const auto& x, const auto& y) { return x.first < y.first; });
+    // Eq. (5) per slot: aco::total_deposit of the slot's deposits in ant order. The deposits are
+    // bucketed by slot keeping that order (a counting sort: stable), so each slot's group is the
+    // same sequence as before and total_deposit sums it left to right from 0.
     std::vector<double> delta(tau.size(), 0.0);
-    std::vector<double> group;
-    for (std::size_t i = 0; i < deposits.size();) {
-      std::size_t j = i;
-      group.clear();
-      while (j < deposits.size() && deposits[j].first == deposits[i].first) group.push_back(deposits[j++].second);
-      delta[deposits[i].first] = aco::total_deposit(group);
-      i = j;
+    slot_count.assign(tau.size() + 1, 0);
+    for (const auto& dp : deposits) ++slot_count[dp.first + 1];
+    for (std::size_t e = 0; e < tau.size(); ++e) slot_count[e + 1] += slot_count[e];
+    grouped.resize(deposits.size());
+    slot_fill.assign(slot_count.begin(), slot_count.end() - 1);
+    for (const auto& dp : deposits) grouped[slot_fill[dp.first]++] = dp.second;
+    for (const auto& dp : deposits) {
+      const std::size_t e = dp.first;
+      if (delta[e] != 0.0 || slot_count[e] == slot_count[e + 1]) continue;  // done (deposits are > 0)
+      delta[e] = aco::total_deposit(std::span<const double>(grouped).subspan(
+          slot_count[e], slot_count[e + 1] - slot_count[e]));
     }
 
     if (cfg.deposit == Deposit::ant_cycle) {

@@ -273,6 +273,7 @@ InitOutcome initial_paths(const grid::Grid& g, grid::Cell start, grid::Cell goal
     }
   }
   std::vector<grid::Cell> genes;
+  std::vector<grid::Cell> chain;  // connect_chain_into's buffer, reused by every chain
   for (std::int64_t a = 0; a < count; ++a) {
     bool done = false;
     for (std::int64_t attempt = 0; attempt < c.init_attempts && !done; ++attempt) {
@@ -284,9 +285,8 @@ InitOutcome initial_paths(const grid::Grid& g, grid::Cell start, grid::Cell goal
       }
       genes.push_back(goal);
       ++out.chains;
-      ga::ChainRepair rep = ga::connect_chain(g, genes, policy, c.mid_rounding, c.init_reject);
-      if (rep.feasible) {
-        out.paths.push_back(std::move(rep.path));
+      if (ga::connect_chain_into(g, genes, policy, c.mid_rounding, c.init_reject, chain) == "ok") {
+        out.paths.push_back(chain);
         done = true;
       }
     }

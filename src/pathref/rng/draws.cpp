@@ -12,13 +12,10 @@ void require_unit(double u) {
 }
 }  // namespace
 
-std::size_t uniform_index(double u, std::size_t n) {
-  require_unit(u);
-  require(n >= 1, "n must be at least 1");
-  const auto k = static_cast<std::size_t>(std::floor(u * static_cast<double>(n)));
-  // u < 1 but u * n can round up to n for huge n; clamp keeps the post-condition.
-  return k < n ? k : n - 1;
-}
+namespace detail {
+void throw_not_unit() { throw DomainError("u must lie in [0, 1)"); }
+void throw_empty_range() { throw DomainError("n must be at least 1"); }
+}  // namespace detail
 
 std::size_t roulette(std::span<const double> weights, double u) {
   require_unit(u);
