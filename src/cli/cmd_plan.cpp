@@ -242,6 +242,10 @@ int run_plan(const PlanOptions& o) {
   const grid::Cell goal = endpoint(o.goal, lm.map.goal, "--goal", "goal");
   check_endpoint(g, start, "start");
   check_endpoint(g, goal, "goal");
+  if (start == goal)
+    throw UsageError(fmt::format("start and goal are the same cell ({}, {}): there is nothing to plan "
+                                 "(give different --start and --goal)",
+                                 start.x, start.y));
 
   planners::Request req;
   req.grid = &g;

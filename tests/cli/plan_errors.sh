@@ -28,6 +28,7 @@ expect_exit 2 "--start: At Most 1 required but received 2" "${g[@]}" --algo asta
 expect_exit 2 "--algo: At Most 1 required but received 2" "${g[@]}" --algo astar --algo dijkstra
 expect_exit 2 "start (4, 0) is a blocked cell" "${g[@]}" --algo astar --start 4,0
 expect_exit 2 "goal (20, 19) is outside the 20x20 map" "${g[@]}" --algo astar --goal 20,19
+expect_exit 2 "start and goal are the same cell (0, 0): there is nothing to plan (give different --start and --goal)" "${g[@]}" --algo astar --start 0,0 --goal 0,0
 expect_exit 2 "unknown parameter 'foo' (known: heuristic)" "${g[@]}" --algo astar --set foo=1
 expect_exit 2 "parameter 'heuristic' must be of the same type" "${g[@]}" --algo astar --set heuristic=3
 expect_exit 2 "--set expects key=value, got 'heuristic'" "${g[@]}" --algo astar --set heuristic

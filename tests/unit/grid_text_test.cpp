@@ -121,6 +121,8 @@ TEST_CASE("grid-text: catalogue of malformed inputs with their exact messages", 
        "m.txt:2:6: a 16384x16385 grid exceeds the limit of 268435456 cells"},
       {"pathref-grid 1\nsize 2 2\n  size 2 2\n",
        "m.txt:3:3: duplicate 'size' line (first given on line 2)"},
+      {"pathref-grid 1\nstart 1 0\ngoal 1 0\nsize 2 1\nmap\n..\n",
+       "m.txt:3:6: goal (1, 0) is the start cell (given on line 2): start and goal must differ"},
       {"pathref-grid 1\nstart 0 0\nstart 0 0\n",
        "m.txt:3:1: duplicate 'start' line (first given on line 2)"},
       {"pathref-grid 1\ngoal 0 0\ngoal 1 1\n", "m.txt:3:1: duplicate 'goal' line (first given on line 2)"},
@@ -188,7 +190,9 @@ TEST_CASE("grid-text: the writer refuses what the reader would reject", "[grid_t
   CHECK_THROWS_AS(to_grid_text(MapFile{g, std::nullopt, std::nullopt, " lead"}), pathref::DomainError);
   CHECK_THROWS_AS(to_grid_text(MapFile{g, std::nullopt, std::nullopt, "trail\t"}), pathref::DomainError);
   CHECK_THROWS_AS(to_grid_text(MapFile{g, std::nullopt, std::nullopt, "new\nline"}), pathref::DomainError);
-  CHECK_NOTHROW(to_grid_text(MapFile{g, Cell{0, 0}, Cell{0, 0}, "caf\xC3\xA9 # 1"}));
+  const Grid two = Grid::from_rows_top_first({".."});
+  CHECK_THROWS_AS(to_grid_text(MapFile{two, Cell{1, 0}, Cell{1, 0}, ""}), pathref::DomainError);
+  CHECK_NOTHROW(to_grid_text(MapFile{two, Cell{0, 0}, Cell{1, 0}, "caf\xC3\xA9 # 1"}));
 }
 
 TEST_CASE("grid-text: read_grid_file reads a file and names it in errors", "[grid_text]") {

@@ -305,6 +305,10 @@ MapFile parse_grid_text(std::string_view text, std::string_view filename) {
   };
   m.start = endpoint(h.start, "start");
   m.goal = endpoint(h.goal, "goal");
+  if (m.start && m.goal && *m.start == *m.goal)
+    throw ParseError(file, h.goal->x.line, h.goal->x.column,
+                     fmt::format("goal ({}, {}) is the start cell (given on line {}): start and goal must differ",
+                                 m.goal->x, m.goal->y, h.start_line));
   return m;
 }
 
@@ -318,6 +322,7 @@ std::string to_grid_text(const MapFile& map) {
           "to_grid_text: the map name starts or ends with a space or tab");
   require(!map.start || g.free(*map.start), "to_grid_text: start is not a free cell of the grid");
   require(!map.goal || g.free(*map.goal), "to_grid_text: goal is not a free cell of the grid");
+  require(!map.start || !map.goal || !(*map.start == *map.goal), "to_grid_text: start and goal are the same cell");
   std::string out = "pathref-grid 1\n";
   if (!map.name.empty()) out += "name " + map.name + "\n";
   out += fmt::format("size {} {}\n", g.width(), g.height());
