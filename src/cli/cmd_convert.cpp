@@ -9,6 +9,7 @@
 
 #include "commands.hpp"
 #include "pathref/core/error.hpp"
+#include "pathref/geometry/inflation.hpp"
 #include "pathref/io/map_file.hpp"
 
 namespace pathref::cli {
@@ -57,9 +58,9 @@ int run_convert(const ConvertOptions& o) {
 
 void add_map_read_options(CLI::App* cmd, MapReadArgs& args) {
   cmd->add_option("--format", args.format,
-                  "map format: auto (by extension, spec/formats.md#detection), pathref-grid, movingai, matrix, ros")
+                  "map format: auto (by extension, spec/formats.md#detection), pathref-grid, movingai, matrix, ros, scene")
       ->type_name("FORMAT")
-      ->check(CLI::IsMember({"auto", "pathref-grid", "movingai", "matrix", "ros"}))
+      ->check(CLI::IsMember({"auto", "pathref-grid", "movingai", "matrix", "ros", "scene"}))
       ->capture_default_str();
   cmd->add_option("--swamp", args.swamp, "MovingAI 'S' (swamp) cells: free or blocked")
       ->type_name("free|blocked")
@@ -87,6 +88,7 @@ io::MapReadOptions map_read_options(const MapReadArgs& args) {
   o.ros_unknown = io::parse_unknown_as(args.unknown);
   if (!args.max_side.empty()) o.limits.max_side = parse_limit(args.max_side, "--max-side");
   if (!args.max_cells.empty()) o.limits.max_cells = parse_limit(args.max_cells, "--max-cells");
+  o.scene_to_map = geometry::scene_map;  // .json: polygon scenes, inflated exactly
   return o;
 }
 

@@ -36,7 +36,7 @@ void add_inflate_command(CLI::App& app, Action& run) {
   cmd->callback([&run] {
     run = [] {
       const geometry::Scene scene = geometry::read_scene_file(scene_path);
-      const geometry::InflatedScene inf = geometry::inflate_scene(scene);
+      const geometry::InflatedScene inf = geometry::inflate_scene_file(scene, scene_path);
       io::MapFile map{inf.grid, inf.start, inf.goal, scene.name};
       const std::string text = io::to_grid_text(map);
       if (out_path.empty()) {

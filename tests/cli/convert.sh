@@ -78,7 +78,7 @@ expect_exit 2 "$tmp/huge.map:2:8: height must be between 1 and 5000, got '100000
 expect_exit 2 "cannot read map file '$tmp/none.map'" convert "$tmp/none.map" --to matrix
 expect_exit 2 "is a MovingAI scenario file, not a map: run it with pathref scen" plan --map tests/data/movingai/rooms40x30.map.scen --algo astar
 expect_exit 2 "--to: png not in {pathref-grid,movingai,matrix,matlab}" convert "$m" --to png
-expect_exit 2 "--format: png not in {auto,pathref-grid,movingai,matrix,ros}" convert "$m" --to matrix --format png
+expect_exit 2 "--format: png not in {auto,pathref-grid,movingai,matrix,ros,scene}" convert "$m" --to matrix --format png
 expect_exit 2 "--max-cells expects a decimal integer from 1 to 268435456, got '268435457'" convert "$m" --to matrix --max-cells 268435457
 expect_exit 2 "cannot write '$tmp/no/dir/x'" convert "$m" --to matrix -o "$tmp/no/dir/x"
 echo "convert: ok"

@@ -45,4 +45,14 @@ printf '{"format": "pathref-scene 1", "width": 0}' >"$tmp/bad.json"
 expect_exit 2 "$tmp/bad.json" inflate "$tmp/bad.json"
 printf '{"format": "pathref-scene 1",\n  "width": 4,,}' >"$tmp/syntax.json"
 expect_exit 2 "$tmp/syntax.json:2" inflate "$tmp/syntax.json"
+# scenes as maps (spec/formats.md#scene-as-map): plan and convert read .json through the inflation
+expect_exit 0 "" plan --map tests/data/scenes/ushape.json --algo astar --json
+python3 -c "import json,sys; d=json.load(open(sys.argv[1])); assert d['found'] and d['path'][0]==[0,0] and d['path'][-1]==[19,15], d" "$tmp/out"
+expect_exit 0 "" inflate tests/data/scenes/ushape.json --out "$tmp/ushape.grid"
+expect_exit 0 "" convert tests/data/scenes/ushape.json --to pathref-grid
+cmp -s "$tmp/out" "$tmp/ushape.grid" || { echo "FAIL: convert of a scene differs from inflate"; exit 1; }
+printf '{"format": "pathref-scene 1", "origin": [0, 0], "width": 4, "height": 4, "cell_size": 1, "radius": 0.5, "margin": 0, "polygons": [{"vertices": [[1, 1], [2, 2], [3, 3]]}], "start": [0, 3], "goal": [3, 0]}' >"$tmp/degenerate.json"
+expect_exit 2 "DomainError: $tmp/degenerate.json: /polygons/0: degenerate polygon" plan --map "$tmp/degenerate.json" --algo astar
+expect_exit 2 "DomainError: $tmp/degenerate.json: /polygons/0: degenerate polygon" inflate "$tmp/degenerate.json"
+expect_exit 2 "tests/data/scenes/ushape.json:0:0: /width: a 20x16 grid exceeds the limit of 10 cells per side" plan --map tests/data/scenes/ushape.json --algo astar --max-side 10
 echo "inflate: ok"

@@ -297,7 +297,7 @@ TEST_CASE("map files: format detection, loading, writing", "[movingai][map_file]
   CHECK(parse_map_format("movingai") == MapFormat::movingai);
   CHECK(to_string(MapFormat::pathref_grid) == "pathref-grid");
   CHECK_THROWS_WITH(parse_map_format("png"),
-                    "unknown map format 'png' (known: auto, pathref-grid, movingai, matrix, ros)");
+                    "unknown map format 'png' (known: auto, pathref-grid, movingai, matrix, ros, scene)");
   CHECK_THROWS_WITH(load_map_file("/nonexistent/x.map", {}), "cannot read map file '/nonexistent/x.map': No such file or directory");
   CHECK_THROWS_WITH(load_map_file("t.scen", {}),
                     "'t.scen' is a MovingAI scenario file, not a map: run it with pathref scen");

@@ -9,9 +9,13 @@
 /// Spec: spec/inflation.md
 #include <cstddef>
 #include <optional>
+#include <string>
+#include <string_view>
 
 #include "pathref/geometry/scene.hpp"
 #include "pathref/grid/grid.hpp"
+#include "pathref/io/grid_text.hpp"
+#include "pathref/io/map_file.hpp"
 
 namespace pathref::geometry {
 
@@ -59,6 +63,18 @@ struct InflatedScene {
 /// given, inside the grid, not blocked, and distinct. Spec: inflation.scene.
 /// Throws DomainError ("/start: ...", "/goal: ..."). Golden: golden/inflation/inflation.scene.json
 [[nodiscard]] InflatedScene inflate_scene(const Scene& scene);
+
+/// A scene file's text as a map (what `pathref plan --map FILE.json` and `convert` read; the
+/// io::MapReadOptions::scene_to_map hook): parse_scene_json, then the scene's width and height
+/// are checked against `limits` before any grid is allocated (ParseError `FILE:0:0: /width: a
+/// WxH grid exceeds the limit of N cells per side` or `... of N cells`), then inflate_scene; its
+/// DomainErrors are reported as `FILE: /start: ...` (naming the file). The map's name is the
+/// scene's. Spec: spec/formats.md#polygon-scene-json ("As a map"), inflation.scene.
+[[nodiscard]] io::MapFile scene_map(std::string_view text, const std::string& filename,
+                                    const io::ReadLimits& limits);
+
+/// inflate_scene with its DomainErrors prefixed by `filename: ` (the CLI's `inflate`). Spec: inflation.scene.
+[[nodiscard]] InflatedScene inflate_scene_file(const Scene& scene, const std::string& filename);
 
 /// Makes the inflation.* rules available to `pathref eval`, the golden runner and
 /// `pathref golden regenerate` (adds them to the rule registry through

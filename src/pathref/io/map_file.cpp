@@ -67,7 +67,9 @@ MapFormat parse_map_format(std::string_view name) {
   if (name == "movingai") return MapFormat::movingai;
   if (name == "matrix") return MapFormat::matrix;
   if (name == "ros") return MapFormat::ros;
-  throw UsageError(fmt::format("unknown map format '{}' (known: auto, pathref-grid, movingai, matrix, ros)", name));
+  if (name == "scene") return MapFormat::scene;
+  throw UsageError(
+      fmt::format("unknown map format '{}' (known: auto, pathref-grid, movingai, matrix, ros, scene)", name));
 }
 
 std::string_view to_string(MapFormat format) noexcept {
@@ -77,6 +79,7 @@ std::string_view to_string(MapFormat format) noexcept {
     case MapFormat::movingai: return "movingai";
     case MapFormat::matrix: return "matrix";
     case MapFormat::ros: return "ros";
+    case MapFormat::scene: return "scene";
   }
   return "auto";
 }
@@ -132,6 +135,7 @@ MapFormat detect_map_format(std::string_view path, std::string_view head) {
   if (ext == ".map") return MapFormat::movingai;
   if (ext == ".m" || ext == ".csv") return MapFormat::matrix;
   if (ext == ".yaml" || ext == ".yml") return MapFormat::ros;
+  if (ext == ".json") return MapFormat::scene;
   if (starts_with_word(head, "pathref-grid")) return MapFormat::pathref_grid;
   if (starts_with_word(head, "type")) return MapFormat::movingai;
   return MapFormat::matrix;
@@ -161,6 +165,14 @@ MapFile parse_map_text(std::string_view text_in, std::string_view filename, MapF
     case MapFormat::ros:
       throw UsageError(fmt::format("'{}': a ROS map is a YAML file and its image; read it with load_map_file "
                                    "(pathref plan --map FILE.yaml) or parse_ros_map", filename));
+    case MapFormat::scene: {
+      if (!options.scene_to_map)
+        throw UsageError(fmt::format("'{}': a polygon scene needs the exact inflation of pathref_geometry "
+                                     "(pathref plan --map FILE.json, or MapReadOptions::scene_to_map)",
+                                     filename));
+      MapFile m = options.scene_to_map(text_in, std::string(filename), options.limits);
+      return m;
+    }
     case MapFormat::automatic: break;
   }
   throw DomainError("parse_map_text: the format must not be 'auto'");

@@ -7,6 +7,7 @@
 /// Spec: spec/formats.md#map-files (detection, limits, options), #movingai-map, #matrix, #ros-map.
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -38,15 +39,16 @@ struct MovingAiTerrain {
 };
 
 /// The map formats. `automatic` means: decide by the file name (detect_map_format).
-enum class MapFormat { automatic, pathref_grid, movingai, matrix, ros };
+enum class MapFormat { automatic, pathref_grid, movingai, matrix, ros, scene };
 
-/// "auto" | "pathref-grid" | "movingai" | "matrix" | "ros" -> format; UsageError otherwise.
+/// "auto" | "pathref-grid" | "movingai" | "matrix" | "ros" | "scene" -> format; UsageError otherwise.
 [[nodiscard]] MapFormat parse_map_format(std::string_view name);
 /// The inverse of parse_map_format.
 [[nodiscard]] std::string_view to_string(MapFormat format) noexcept;
 
 /// The format of a map file from its name and its first bytes (spec/formats.md#detection):
 /// `.map` -> movingai; `.m` and `.csv` -> matrix; `.yaml` and `.yml` -> ros (map_server YAML);
+/// `.json` -> scene (pathref-scene 1 polygons, inflated);
 /// any other name -> pathref_grid when the text
 /// starts with "pathref-grid", movingai when it starts with "type", else matrix.
 /// Never returns automatic. Pre: none.
@@ -59,6 +61,11 @@ struct MapReadOptions {
   ReadLimits limits;
   /// ROS maps: what unknown cells become (spec/formats.md#ros-occupancy; default blocked).
   UnknownAs ros_unknown = UnknownAs::blocked;
+  /// Polygon scenes: turns a scene file's text into a map (the exact inflation of
+  /// spec/inflation.md lives in pathref_geometry, which links CGAL; the CLI installs it). Empty:
+  /// a scene is a UsageError saying so. Pre: none.
+  /// It receives the limits and must check them before allocating the grid.
+  std::function<MapFile(std::string_view text, const std::string& filename, const ReadLimits& limits)> scene_to_map;
 };
 
 /// A map read from a file, with the format it was read as.
