@@ -344,6 +344,12 @@ std::vector<Claim> reading_claims(const Json& results, const ShiReading& r) {
     Claim c = under[i];
     c.id += r.suffix;
     c.text += " [reading: " + r.key + "]";
+    for (const std::string& p : r.planners) {  // the note names the series it read
+      const std::string from = "'" + p + "'";
+      const std::string to = "'" + p + "@" + r.key + "'";
+      for (std::size_t at = c.note.find(from); at != std::string::npos; at = c.note.find(from, at + to.size()))
+        c.note.replace(at, from.size(), to);
+    }
     out.push_back(c);
   }
   return out;
