@@ -214,3 +214,18 @@ TEST_CASE("grid-text: read_grid_file reads a file and names it in errors", "[gri
   CHECK_THROWS_AS(pathref::io::read_grid_file(dir.string()), pathref::UsageError);
   fs::remove_all(dir);
 }
+
+TEST_CASE("grid-text: the shipped sample tests/data/grid/office.grid reads and round-trips", "[grid_text]") {
+  const MapFile m = pathref::io::read_grid_file(std::string(PATHREF_SOURCE_DIR) + "/tests/data/grid/office.grid");
+  CHECK(m.name == "office-floor");
+  CHECK(m.grid.width() == 32);
+  CHECK(m.grid.height() == 12);
+  CHECK(m.start == Cell{1, 1});
+  CHECK(m.goal == Cell{30, 10});
+  CHECK(m.grid.blocked(Cell{0, 0}));   // the border
+  CHECK(m.grid.blocked(Cell{10, 10}));  // the wall of the left room, second row from the top
+  CHECK_FALSE(m.grid.blocked(Cell{10, 6}));  // its door
+  const std::string canonical = to_grid_text(m);
+  CHECK(parse_grid_text(canonical, "rt") == m);
+  CHECK(to_grid_text(parse_grid_text(canonical, "rt")) == canonical);
+}
