@@ -74,6 +74,24 @@ sim::Scenario corridor_scenario(int W, Kind kind, double u, double a, double b, 
   return s;
 }
 
+/// A coordinate on the 1/8 lattice in [-8, 8].
+rc::Gen<double> gen_coord() {
+  return rc::gen::map(rc::gen::inRange(-64, 65), [](int k) { return static_cast<double>(k) / 8.0; });
+}
+
+/// Inside a property: a robot polyline of 2-4 vertices drawn from `coord`, no two consecutive
+/// vertices equal.
+std::vector<Vec2> draw_polyline(const rc::Gen<double>& coord) {
+  const int n = *rc::gen::inRange(2, 5);
+  std::vector<Vec2> robot;
+  for (int i = 0; i < n; ++i) {
+    Vec2 v{*coord, *coord};
+    if (!robot.empty() && v == robot.back()) v.x += 0.125;
+    robot.push_back(v);
+  }
+  return robot;
+}
+
 }  // namespace
 
 TEST_CASE("prop_han_sim_no_collision_where_rules_apply", "[han-sim][prop]") {
@@ -164,14 +182,8 @@ TEST_CASE("prop_han_maps_random_connected_with_ratio", "[han-sim][prop]") {
 
 TEST_CASE("prop_han_classify_mirror_symmetric", "[han-sim][prop]") {
   rc::prop("mirroring robot and obstacle about x = 0, y = 0 or y = x keeps kind, distance and piece", [] {
-    const auto coord = rc::gen::map(rc::gen::inRange(-64, 65), [](int k) { return static_cast<double>(k) / 8.0; });
-    const int n = *rc::gen::inRange(2, 5);
-    std::vector<Vec2> robot;
-    for (int i = 0; i < n; ++i) {
-      Vec2 v{*coord, *coord};
-      if (!robot.empty() && v == robot.back()) v.x += 0.125;
-      robot.push_back(v);
-    }
+    const auto coord = gen_coord();
+    const std::vector<Vec2> robot = draw_polyline(coord);
     const Vec2 p{*coord, *coord}, q{*coord, *coord};
     const double c = *rc::gen::element(0.5, 0.85, 2.0);
     const auto base = sim::classify(robot, p, q, c);
@@ -229,14 +241,8 @@ TEST_CASE("prop_han_rls_prediction_exact_on_linear_obstacles", "[han-sim][prop]"
 
 TEST_CASE("prop_han_safety_margins_not_below_spatial_distance", "[han-sim][prop]") {
   rc::prop("timed margins >= spatial distances: wait >= dist(R0, [o_0, o_J]), go >= classify's D", [] {
-    const auto coord = rc::gen::map(rc::gen::inRange(-64, 65), [](int k) { return static_cast<double>(k) / 8.0; });
-    const int n = *rc::gen::inRange(2, 5);
-    std::vector<Vec2> robot;
-    for (int i = 0; i < n; ++i) {
-      Vec2 v{*coord, *coord};
-      if (!robot.empty() && v == robot.back()) v.x += 0.125;
-      robot.push_back(v);
-    }
+    const auto coord = gen_coord();
+    const std::vector<Vec2> robot = draw_polyline(coord);
     const rls::LinearMotion m{*coord / 4.0, *coord, *coord / 4.0, *coord};
     const double tau = *rc::gen::element(0.0, 1.5, 10.0);
     const double dt = *rc::gen::element(0.125, 0.25, 0.5);

@@ -170,8 +170,7 @@ MapFile parse_map_text(std::string_view text_in, std::string_view filename, MapF
         throw UsageError(fmt::format("'{}': a polygon scene needs the exact inflation of pathref_geometry "
                                      "(pathref plan --map FILE.json, or MapReadOptions::scene_to_map)",
                                      filename));
-      MapFile m = options.scene_to_map(text_in, std::string(filename), options.limits);
-      return m;
+      return options.scene_to_map(text_in, std::string(filename), options.limits);
     }
     case MapFormat::automatic: break;
   }

@@ -557,12 +557,10 @@ Run run(const planners::Request& req, const Config& cfg, rng::Stream& stream) {
     grouped.resize(deposits.size());
     slot_fill.assign(slot_count.begin(), slot_count.end() - 1);
     for (const auto& dp : deposits) grouped[slot_fill[dp.first]++] = dp.second;
-    for (const auto& dp : deposits) {
-      const std::size_t e = dp.first;
-      if (delta[e] != 0.0 || slot_count[e] == slot_count[e + 1]) continue;  // done (deposits are > 0)
-      delta[e] = aco::total_deposit(std::span<const double>(grouped).subspan(
-          slot_count[e], slot_count[e + 1] - slot_count[e]));
-    }
+    for (std::size_t e = 0; e < tau.size(); ++e)
+      if (slot_count[e] != slot_count[e + 1])
+        delta[e] = aco::total_deposit(std::span<const double>(grouped).subspan(
+            slot_count[e], slot_count[e + 1] - slot_count[e]));
 
     if (cfg.deposit == Deposit::ant_cycle) {
       for (std::size_t e = 0; e < tau.size(); ++e) tau[e] = aco::pheromone_update(tau[e], rho, delta[e]);
