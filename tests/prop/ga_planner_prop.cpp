@@ -12,6 +12,7 @@
 #include "pathref/planners/genetic.hpp"
 #include "pathref/planners/planner.hpp"
 #include "pathref/planners/search.hpp"
+#include "pathref/rng/draws.hpp"
 #include "pathref/rng/mt19937.hpp"
 #include "support/generators.hpp"
 
@@ -192,4 +193,125 @@ TEST_CASE("prop: GA planners return valid paths, replay by seed, never beat Dijk
     RC_ASSERT(again.best_per_iteration == r.best_per_iteration);
     RC_ASSERT(again.extra == r.extra);
   });
+}
+
+namespace {
+
+/// spec shi2022.plan.ga step 2 written out literally, as the oracle of initial_paths: every chain
+/// drawn gene by gene and repaired whole by ga::connect_chain (no pair verdicts).
+genetic::InitOutcome literal_init(const Grid& g, Cell start, Cell goal, CornerPolicy policy,
+                                  const genetic::Config& c, rng::Stream& stream,
+                                  std::int64_t count) {
+  genetic::InitOutcome out;
+  std::vector<std::vector<std::int64_t>> rows;  // F_y of each row between, in row order
+  const std::int64_t step = goal.y > start.y ? 1 : -1;
+  for (std::int64_t y = start.y + step; goal.y != start.y && y != goal.y; y += step) {
+    rows.emplace_back();
+    for (std::int64_t x = 0; x < g.width(); ++x)
+      if (g.free(Cell{x, y})) rows.back().push_back(x);
+    if (rows.back().empty()) {
+      out.failure = "row_blocked";
+      return out;
+    }
+  }
+  for (std::int64_t a = 0; a < count; ++a) {
+    bool done = false;
+    for (std::int64_t t = 0; t < c.init_attempts && !done; ++t) {
+      Path genes{start};
+      for (std::size_t r = 0; r < rows.size(); ++r) {
+        const std::int64_t y = start.y + step * static_cast<std::int64_t>(r + 1);
+        genes.push_back(Cell{rows[r][rng::uniform_index(stream.next_double(), rows[r].size())], y});
+      }
+      genes.push_back(goal);
+      ++out.chains;
+      const ga::ChainRepair rep = ga::connect_chain(g, genes, policy, c.mid_rounding, c.init_reject);
+      if (rep.feasible) {
+        out.paths.push_back(rep.path);
+        done = true;
+      }
+    }
+    if (!done) {
+      out.failure = "init_attempts_exhausted";
+      return out;
+    }
+  }
+  out.ok = true;
+  return out;
+}
+
+/// initial_paths and literal_init from the same seed: same outcome, paths, chains and draws.
+void check_init_equals_literal(const Grid& g, Cell start, Cell goal, CornerPolicy policy,
+                               const genetic::Config& c, std::uint32_t seed, std::int64_t count) {
+  rng::Stream s1(seed);
+  rng::Stream s2(seed);
+  const genetic::InitOutcome got = genetic::initial_paths(g, start, goal, policy, c, s1, count);
+  const genetic::InitOutcome want = literal_init(g, start, goal, policy, c, s2, count);
+  RC_ASSERT(got.ok == want.ok);
+  RC_ASSERT(got.failure == want.failure);
+  RC_ASSERT(got.chains == want.chains);
+  RC_ASSERT(got.paths == want.paths);
+  RC_ASSERT(s1.doubles_drawn() == s2.doubles_drawn());
+  RC_ASSERT(s1.next_double() == s2.next_double());
+  RC_TAG(got.ok ? "ok" : got.failure);
+}
+
+}  // namespace
+
+TEST_CASE("prop: shi2022.plan.ga initialisation by pair verdicts equals repairing whole chains") {
+  rc::prop("initial_paths == the literal step 2", [] {
+    const int w = *rc::gen::inRange(1, 10);
+    const int h = *rc::gen::inRange(1, 10);
+    RC_PRE(w * h >= 2);
+    Grid g = testing::random_grid(*rc::gen::arbitrary<std::uint32_t>(), w, h,
+                                  *rc::gen::element(0.0, 0.1, 0.25, 0.4));
+    // start and goal: two different cells (the goal's index skips the start's).
+    const std::int64_t n = g.cell_count();
+    const auto si = *rc::gen::inRange<std::int64_t>(0, n);
+    auto gi = *rc::gen::inRange<std::int64_t>(0, n - 1);
+    if (gi >= si) ++gi;
+    const Cell start = g.cell(si);
+    const Cell goal = g.cell(gi);
+    g.set_blocked(start, false);
+    g.set_blocked(goal, false);
+    genetic::Config c = genetic::shi_ga();
+    c.init_reject = *rc::gen::element(ga::InitReject::blocked, ga::InitReject::near_obstacle,
+                                      ga::InitReject::shift);
+    c.mid_rounding = *rc::gen::element(ga::MidRounding::floor, ga::MidRounding::ceil,
+                                       ga::MidRounding::half_even);
+    c.init_attempts = *rc::gen::inRange<std::int64_t>(1, 300);
+    const CornerPolicy policy = *testing::gen_policy();
+    const auto count = *rc::gen::inRange<std::int64_t>(1, 5);
+    check_init_equals_literal(g, start, goal, policy, c, *rc::gen::arbitrary<std::uint32_t>(), count);
+    RC_TAG(c.init_reject == ga::InitReject::shift ? "shift" : "no shift");
+  });
+}
+
+TEST_CASE("shi2022.plan.ga: initialisation without the pair table (wide map) equals the literal step 2") {
+  // 300 x 16: 300 + 14 * 300 * 300 + 300 > init_verdict_max_entries pairs, so initial_paths
+  // repairs every chain whole; on 300 x 12 (10 * 90 000 + 600 pairs) it keeps the table.
+  for (const int h : {16, 12}) {
+    const std::int64_t rows = h - 2;
+    REQUIRE((rows * 300 * 300 + 600 > genetic::init_verdict_max_entries) == (h == 16));
+    for (const ga::InitReject rej : {ga::InitReject::blocked, ga::InitReject::shift}) {
+      Grid g = testing::random_grid(11, 300, h, 0.003);
+      g.set_blocked(Cell{0, 0}, false);
+      g.set_blocked(Cell{299, h - 1}, false);
+      genetic::Config c = genetic::shi_ga();
+      c.init_reject = rej;
+      c.init_attempts = 500;
+      rng::Stream s1(3);
+      rng::Stream s2(3);
+      const genetic::InitOutcome got =
+          genetic::initial_paths(g, Cell{0, 0}, Cell{299, h - 1}, CornerPolicy::strict, c, s1, 3);
+      const genetic::InitOutcome want =
+          literal_init(g, Cell{0, 0}, Cell{299, h - 1}, CornerPolicy::strict, c, s2, 3);
+      CHECK(got.ok == want.ok);
+      CHECK(got.failure == want.failure);
+      CHECK(got.chains == want.chains);
+      CHECK(got.paths == want.paths);
+      CHECK(s1.doubles_drawn() == s2.doubles_drawn());
+      CHECK(want.ok);          // three accepted chains ...
+      CHECK(want.chains > 3);  // ... and rejected ones: the comparison covers both
+    }
+  }
 }

@@ -42,13 +42,20 @@ bool has_blocked_neighbour(const grid::Grid& g, grid::Cell c) {
 std::string_view connect_chain_into(const grid::Grid& g, std::span<const grid::Cell> genes,
                                    grid::CornerPolicy policy, MidRounding rounding, InitReject rej,
                                    std::vector<grid::Cell>& p) {
+  std::int64_t shifts = 0;
+  return connect_chain_into(g, genes, policy, rounding, rej, p, shifts);
+}
+
+std::string_view connect_chain_into(const grid::Grid& g, std::span<const grid::Cell> genes,
+                                   grid::CornerPolicy policy, MidRounding rounding, InitReject rej,
+                                   std::vector<grid::Cell>& p, std::int64_t& inserted) {
+  inserted = 0;
   require(genes.size() >= 2, "a chain needs at least two genes (start and goal)");
   for (const grid::Cell c : genes) require(g.in_bounds(c), "a gene lies outside the grid");
   for (const grid::Cell c : genes)
     if (g.blocked(c)) return "blocked_gene";
   p.assign(genes.begin(), genes.end());
   std::size_t k = 0;
-  std::int64_t inserted = 0;
   while (k + 1 < p.size()) {
     const grid::Cell a = p[k];
     const grid::Cell b = p[k + 1];

@@ -69,6 +69,15 @@ struct ChainRepair {
                                                   grid::CornerPolicy policy, MidRounding rounding,
                                                   InitReject reject, std::vector<grid::Cell>& path);
 
+/// connect_chain_into that also sets `shifts` to the number of shifted mid-points it made
+/// (InitReject::shift; always 0 otherwise), the count that the W * H bound ("insert_limit")
+/// applies to. The GA initialisation uses it to decide a chain pair by pair (spec
+/// shi2022.plan.ga, "Evaluation"). Spec: shi2022.op.init. Pre: as connect_chain.
+[[nodiscard]] std::string_view connect_chain_into(const grid::Grid& g, std::span<const grid::Cell> genes,
+                                                  grid::CornerPolicy policy, MidRounding rounding,
+                                                  InitReject reject, std::vector<grid::Cell>& path,
+                                                  std::int64_t& shifts);
+
 /// One crossover point: position k in parent a and position j in parent b with a[k] == b[j].
 struct CrossPoint {
   std::size_t k = 0;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 #include <utility>
 
 #include "pathref/core/error.hpp"
@@ -251,6 +252,63 @@ Individual make_individual(const grid::Grid& g, std::vector<grid::Cell> path, co
   return ind;
 }
 
+namespace {
+
+/// The outcome of every pair of consecutive genes of the initialisation's chains, computed on
+/// first use (spec shi2022.plan.ga, "Evaluation"). Level 0 is {S}, levels 1..R the free cells of
+/// the rows between, level R + 1 is {E}; the entry of (level l, cell i) -> (level l + 1, cell j)
+/// is connect_chain_into's verdict on the two-gene chain [i, j]: rejected, or feasible with s
+/// shifts. A chain is feasible iff each of its pairs is and the shifts add up to at most W * H.
+class PairVerdicts {
+ public:
+  static constexpr std::int32_t unknown = -2;
+  static constexpr std::int32_t rejected = -1;
+
+  /// Dense table when it has at most `max_entries` entries; otherwise enabled() is false.
+  PairVerdicts(const std::vector<std::vector<grid::Cell>>& levels, std::int64_t max_entries)
+      : levels_(levels) {
+    std::int64_t total = 0;
+    for (std::size_t l = 0; l + 1 < levels.size(); ++l) {
+      offset_.push_back(total);
+      total += static_cast<std::int64_t>(levels[l].size()) *
+               static_cast<std::int64_t>(levels[l + 1].size());
+      if (total > max_entries) {
+        offset_.clear();
+        return;
+      }
+    }
+    verdict_.assign(static_cast<std::size_t>(total), unknown);
+    enabled_ = true;
+  }
+
+  [[nodiscard]] bool enabled() const noexcept { return enabled_; }
+
+  /// The verdict of pair (l, i) -> (l + 1, j): rejected, or the shifts of its repair.
+  std::int32_t get(const grid::Grid& g, grid::CornerPolicy policy, const Config& c, std::size_t l,
+                   std::size_t i, std::size_t j) {
+    const auto e = static_cast<std::size_t>(offset_[l]) + i * levels_[l + 1].size() + j;
+    std::int32_t& v = verdict_[e];
+    if (v == unknown) {
+      const grid::Cell pair[2] = {levels_[l][i], levels_[l + 1][j]};
+      std::int64_t shifts = 0;
+      const bool ok = ga::connect_chain_into(g, pair, policy, c.mid_rounding, c.init_reject,
+                                             scratch_, shifts) == "ok";
+      // ok implies shifts <= W * H <= 2^28 (else "insert_limit"), so it fits.
+      v = ok ? static_cast<std::int32_t>(shifts) : rejected;
+    }
+    return v;
+  }
+
+ private:
+  const std::vector<std::vector<grid::Cell>>& levels_;
+  std::vector<std::int64_t> offset_;
+  std::vector<std::int32_t> verdict_;
+  std::vector<grid::Cell> scratch_;
+  bool enabled_ = false;
+};
+
+}  // namespace
+
 InitOutcome initial_paths(const grid::Grid& g, grid::Cell start, grid::Cell goal,
                           grid::CornerPolicy policy, const Config& c, rng::Stream& stream,
                           std::int64_t count) {
@@ -258,36 +316,52 @@ InitOutcome initial_paths(const grid::Grid& g, grid::Cell start, grid::Cell goal
   require(g.free(start) && g.free(goal), "GA: start or goal blocked");
   require(!(start == goal), "GA: start == goal has no initial chain");
   InitOutcome out;
-  // The rows strictly between start and goal, from the start's side (spec "Initialisation").
-  std::vector<std::int64_t> rows;
+  // The levels of a chain: S, the free cells of each row strictly between start and goal (from
+  // the start's side, x ascending; spec "Initialisation"), E.
+  std::vector<std::vector<grid::Cell>> levels{{start}};
   const std::int64_t step = goal.y > start.y ? 1 : -1;
   if (goal.y != start.y)
-    for (std::int64_t y = start.y + step; y != goal.y; y += step) rows.push_back(y);
-  std::vector<std::vector<std::int64_t>> free_x(rows.size());
-  for (std::size_t r = 0; r < rows.size(); ++r) {
-    for (std::int64_t x = 0; x < g.width(); ++x)
-      if (g.free(grid::Cell{x, rows[r]})) free_x[r].push_back(x);
-    if (free_x[r].empty()) {
-      out.failure = "row_blocked";
-      return out;
+    for (std::int64_t y = start.y + step; y != goal.y; y += step) {
+      std::vector<grid::Cell>& row = levels.emplace_back();
+      for (std::int64_t x = 0; x < g.width(); ++x)
+        if (g.free(grid::Cell{x, y})) row.push_back(grid::Cell{x, y});
+      if (row.empty()) {
+        out.failure = "row_blocked";
+        return out;
+      }
     }
-  }
-  std::vector<grid::Cell> genes;
+  levels.push_back({goal});
+  const std::size_t L = levels.size();
+  PairVerdicts verdicts(levels, init_verdict_max_entries);
+  std::vector<std::size_t> pick(L, 0);  // the chosen cell of each level (S and E: 0)
+  std::vector<grid::Cell> genes(L);
   std::vector<grid::Cell> chain;  // connect_chain_into's buffer, reused by every chain
   for (std::int64_t a = 0; a < count; ++a) {
     bool done = false;
     for (std::int64_t attempt = 0; attempt < c.init_attempts && !done; ++attempt) {
-      genes.clear();
-      genes.push_back(start);
-      for (std::size_t r = 0; r < rows.size(); ++r) {
-        const std::size_t k = rng::uniform_index(stream.next_double(), free_x[r].size());
-        genes.push_back(grid::Cell{free_x[r][k], rows[r]});
-      }
-      genes.push_back(goal);
+      for (std::size_t l = 1; l + 1 < L; ++l)
+        pick[l] = rng::uniform_index(stream.next_double(), levels[l].size());
       ++out.chains;
-      if (ga::connect_chain_into(g, genes, policy, c.mid_rounding, c.init_reject, chain) == "ok") {
+      bool feasible = true;
+      if (verdicts.enabled()) {
+        std::int64_t shifts = 0;
+        for (std::size_t l = 0; l + 1 < L && feasible; ++l) {
+          const std::int32_t v = verdicts.get(g, policy, c, l, pick[l], pick[l + 1]);
+          feasible = v != PairVerdicts::rejected;
+          shifts += v;
+        }
+        feasible = feasible && shifts <= g.cell_count();
+      }
+      if (!feasible) continue;
+      for (std::size_t l = 0; l < L; ++l) genes[l] = levels[l][pick[l]];
+      const std::string_view reason =
+          ga::connect_chain_into(g, genes, policy, c.mid_rounding, c.init_reject, chain);
+      if (reason == "ok") {
         out.paths.push_back(chain);
         done = true;
+      } else if (verdicts.enabled()) {
+        throw std::logic_error("GA initialisation: the pair verdicts accepted a chain that "
+                               "connect_chain rejects (" + std::string(reason) + ")");
       }
     }
     if (!done) {

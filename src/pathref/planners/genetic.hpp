@@ -143,9 +143,18 @@ struct InitOutcome {
   std::int64_t chains = 0;  ///< chains drawn (accepted + rejected)
 };
 
+/// Largest number of gene pairs for which initial_paths keeps a table of pair verdicts (spec
+/// shi2022.plan.ga, "Evaluation"): 2^20 entries of 4 bytes. A 20 x 20 map needs at most
+/// 19 * 20 * 20 = 7 600, a 64 x 64 map 63 * 64 * 64 = 258 048; larger ones repair every chain
+/// whole, as the rule is written. Either way the outcome and the draws are the same.
+inline constexpr std::int64_t init_verdict_max_entries = std::int64_t{1} << 20;
+
 /// `count` random initial paths (Sec. 4.2 steps 1-3; spec shi2022.plan.ga "Initialisation"): per
 /// individual, up to init_attempts chains (one draw per intermediate row), each repaired by
-/// ga::connect_chain; stops at the first individual whose attempts are exhausted.
+/// ga::connect_chain; stops at the first individual whose attempts are exhausted. A chain is
+/// decided pair by pair from a table of pair verdicts filled on first use, and repaired whole only
+/// when every pair passes (spec "Evaluation": the same outcome, chains and draws as repairing
+/// every chain whole).
 /// Spec: shi2022.plan.ga. Pre: start != goal, both in bounds and free (DomainError).
 [[nodiscard]] InitOutcome initial_paths(const grid::Grid& g, grid::Cell start, grid::Cell goal,
                                         grid::CornerPolicy policy, const Config& c,
