@@ -315,3 +315,31 @@ TEST_CASE("shi2022.plan.ga: initialisation without the pair table (wide map) equ
     }
   }
 }
+
+TEST_CASE("prop: shi2022.op.crossover points are those of the written-out scan, short or long") {
+  // crossover_points is defined on any cell sequences. Cells drawn from a 5 x 5 square repeat
+  // often; with up to 400 nodes, (n_a - 2)(n_b - 2) runs from 0 to ~160 000, on both sides of
+  // ga::crossover_scan_limit (scan vs table of first positions).
+  const auto gen_sequence = [] {
+    const auto n = *rc::gen::element<std::size_t>(0, 3, 40, 150, 400);
+    Path p(n);
+    for (Cell& c : p)
+      c = Cell{*rc::gen::inRange<std::int64_t>(0, 5), *rc::gen::inRange<std::int64_t>(0, 5)};
+    return p;
+  };
+  rc::prop("crossover_points == the definition", [&] {
+    const Path a = gen_sequence();
+    const Path b = gen_sequence();
+    std::vector<ga::CrossPoint> want;
+    for (std::size_t k = 1; k + 1 < a.size(); ++k)
+      for (std::size_t j = 1; j + 1 < b.size(); ++j)
+        if (a[k] == b[j]) {
+          want.push_back(ga::CrossPoint{k, j});
+          break;
+        }
+    const bool long_parents = a.size() >= 3 && b.size() >= 3 &&
+                              (a.size() - 2) * (b.size() - 2) > ga::crossover_scan_limit;
+    RC_TAG(long_parents ? "table" : "scan");
+    RC_ASSERT(ga::crossover_points(a, b) == want);
+  });
+}

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <unordered_map>
 
 #include "pathref/core/error.hpp"
 
@@ -26,6 +27,20 @@ std::string_view to_string(InitReject v) noexcept {
 }
 
 namespace {
+
+/// Hash of a cell for crossover_points' table (splitmix64 finaliser of x, mixed with y).
+struct CellHash {
+  std::size_t operator()(const grid::Cell& c) const noexcept {
+    std::uint64_t h = static_cast<std::uint64_t>(c.x) * 0x9E3779B97F4A7C15ULL ^
+                      static_cast<std::uint64_t>(c.y);
+    h ^= h >> 30;
+    h *= 0xBF58476D1CE4E5B9ULL;
+    h ^= h >> 27;
+    h *= 0x94D049BB133111EBULL;
+    h ^= h >> 31;
+    return static_cast<std::size_t>(h);
+  }
+};
 
 bool has_blocked_neighbour(const grid::Grid& g, grid::Cell c) {
   for (std::int64_t dy = -1; dy <= 1; ++dy)
@@ -106,12 +121,26 @@ std::vector<CrossPoint> crossover_points(std::span<const grid::Cell> a,
                                          std::span<const grid::Cell> b) {
   std::vector<CrossPoint> out;
   if (a.size() < 3 || b.size() < 3) return out;
-  for (std::size_t k = 1; k + 1 < a.size(); ++k)
-    for (std::size_t j = 1; j + 1 < b.size(); ++j)
-      if (a[k] == b[j]) {
-        out.push_back(CrossPoint{k, j});
-        break;
-      }
+  const std::size_t na = a.size() - 2;
+  const std::size_t nb = b.size() - 2;
+  if (na <= crossover_scan_limit / nb) {  // na * nb <= limit: scan b for every a[k]
+    for (std::size_t k = 1; k <= na; ++k)
+      for (std::size_t j = 1; j <= nb; ++j)
+        if (a[k] == b[j]) {
+          out.push_back(CrossPoint{k, j});
+          break;
+        }
+    return out;
+  }
+  // Long parents (loops = keep lets paths grow to 10^5 nodes and more): the first interior
+  // position of every cell of b, then one lookup per a[k]; the same points as the scan.
+  std::unordered_map<grid::Cell, std::size_t, CellHash> first;
+  first.reserve(nb);
+  for (std::size_t j = 1; j <= nb; ++j) first.try_emplace(b[j], j);  // keeps the first j
+  for (std::size_t k = 1; k <= na; ++k) {
+    const auto it = first.find(a[k]);
+    if (it != first.end()) out.push_back(CrossPoint{k, it->second});
+  }
   return out;
 }
 

@@ -85,6 +85,11 @@ struct CrossPoint {
   friend constexpr bool operator==(const CrossPoint&, const CrossPoint&) = default;
 };
 
+/// Above this many pairs (n_a - 2) * (n_b - 2) of interior nodes, crossover_points finds the
+/// common nodes through a table of b's first positions instead of scanning b for every node of
+/// a; the points are the same.
+inline constexpr std::size_t crossover_scan_limit = 4096;
+
 /// The common nodes of two paths (Figure 3: "find out all identical points on both paths"): for
 /// each interior position k = 1..n_a-2 of a, ascending, such that a[k] occurs among the interior
 /// positions 1..n_b-2 of b, the point (k, j) with j the FIRST such position in b.

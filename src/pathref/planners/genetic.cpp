@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <stdexcept>
 #include <utility>
@@ -424,14 +425,16 @@ Evolution evolve(const grid::Grid& g, grid::CornerPolicy policy, const Config& c
       }
     }
     // IHA step 7: elite retention over parents ++ children, keeping the population size.
+    // (pop is not read again in this generation: its individuals are moved, not copied.)
     if (c.elitist) {
-      std::vector<Individual> merged = pop;
-      merged.insert(merged.end(), pool.begin(), pool.end());
+      std::vector<Individual> merged = std::move(pop);
+      merged.insert(merged.end(), std::make_move_iterator(pool.begin()),
+                    std::make_move_iterator(pool.end()));
       std::vector<double> mf(merged.size());
       for (std::size_t s = 0; s < merged.size(); ++s) mf[s] = merged[s].fitness;
-      const std::vector<std::size_t> keep = ga::elite_indices(mf, S);
+      const std::vector<std::size_t> keep = ga::elite_indices(mf, S);  // distinct indices
       pool.clear();
-      for (const std::size_t k : keep) pool.push_back(merged[k]);
+      for (const std::size_t k : keep) pool.push_back(std::move(merged[k]));
     }
     // Step 4: mutation of each individual.
     for (std::size_t a = 0; a < S; ++a) {
@@ -441,7 +444,7 @@ Evolution evolve(const grid::Grid& g, grid::CornerPolicy policy, const Config& c
       const std::size_t k = 1 + rng::uniform_index(stream.next_double(), n - 2);
       const std::vector<grid::Cell> cand = ga::mutation_candidates(g, pool[a].path, k, policy);
       if (cand.empty()) continue;
-      std::vector<grid::Cell> path = pool[a].path;
+      std::vector<grid::Cell> path = std::move(pool[a].path);  // pool[a] is replaced below
       path[k] = cand[rng::uniform_index(stream.next_double(), cand.size())];
       if (c.loops == Loops::cut) path = ga::remove_loops(path);
       pool[a] = make_individual(g, std::move(path), c, Origin::mutation, i);
