@@ -23,12 +23,13 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
-#include <malloc.h>
 #include <filesystem>
-#include <string>
 #include <map>
 #include <new>
+#include <string>
 #include <utility>
+
+#include <malloc.h>
 
 #include "pathref/grid/grid.hpp"
 #include "pathref/io/builtin_maps.hpp"

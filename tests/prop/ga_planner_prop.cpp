@@ -287,11 +287,12 @@ TEST_CASE("prop: shi2022.plan.ga initialisation by pair verdicts equals repairin
 }
 
 TEST_CASE("shi2022.plan.ga: initialisation without the pair table (wide map) equals the literal step 2") {
-  // 300 x 16: 300 + 14 * 300 * 300 + 300 > init_verdict_max_entries pairs, so initial_paths
-  // repairs every chain whole; on 300 x 12 (10 * 90 000 + 600 pairs) it keeps the table.
+  // Corner to corner on 300 x h there are h - 2 rows between, so 300 + (h - 3) * 300 * 300 + 300
+  // gene pairs: 300 x 16 (1 170 600) is above init_verdict_max_entries, so initial_paths repairs
+  // every chain whole; 300 x 12 (810 600) keeps the table.
   for (const int h : {16, 12}) {
-    const std::int64_t rows = h - 2;
-    REQUIRE((rows * 300 * 300 + 600 > genetic::init_verdict_max_entries) == (h == 16));
+    const std::int64_t pairs = std::int64_t{600} + (h - 3) * std::int64_t{300 * 300};
+    REQUIRE((pairs > genetic::init_verdict_max_entries) == (h == 16));
     for (const ga::InitReject rej : {ga::InitReject::blocked, ga::InitReject::shift}) {
       Grid g = testing::random_grid(11, 300, h, 0.003);
       g.set_blocked(Cell{0, 0}, false);

@@ -348,8 +348,10 @@ InitOutcome initial_paths(const grid::Grid& g, grid::Cell start, grid::Cell goal
         std::int64_t shifts = 0;
         for (std::size_t l = 0; l + 1 < L && feasible; ++l) {
           const std::int32_t v = verdicts.get(g, policy, c, l, pick[l], pick[l + 1]);
-          feasible = v != PairVerdicts::rejected;
-          shifts += v;
+          if (v == PairVerdicts::rejected)
+            feasible = false;
+          else
+            shifts += v;
         }
         feasible = feasible && shifts <= g.cell_count();
       }

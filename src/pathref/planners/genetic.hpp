@@ -144,9 +144,10 @@ struct InitOutcome {
 };
 
 /// Largest number of gene pairs for which initial_paths keeps a table of pair verdicts (spec
-/// shi2022.plan.ga, "Evaluation"): 2^20 entries of 4 bytes. A 20 x 20 map needs at most
-/// 19 * 20 * 20 = 7 600, a 64 x 64 map 63 * 64 * 64 = 258 048; larger ones repair every chain
-/// whole, as the rule is written. Either way the outcome and the draws are the same.
+/// shi2022.plan.ga, "Evaluation"): 2^20 entries of 4 bytes. With R rows between start and goal
+/// the table has at most 2W + (R - 1) * W^2 entries: 6 840 on a 20 x 20 map corner to corner,
+/// 249 984 on 64 x 64; maps above the limit repair every chain whole, as the rule is written.
+/// Either way the outcome and the draws are the same.
 inline constexpr std::int64_t init_verdict_max_entries = std::int64_t{1} << 20;
 
 /// `count` random initial paths (Sec. 4.2 steps 1-3; spec shi2022.plan.ga "Initialisation"): per
