@@ -3,12 +3,13 @@
 
 #include "pathref/golden/runner.hpp"
 #include "pathref/rules/registry.hpp"
+#include "support/paths.hpp"
 
 using pathref::golden::Json;
 using pathref::golden::Status;
 
 TEST_CASE("golden: every vector in golden/ passes", "[golden]") {
-  const auto report = pathref::golden::check_directory(PATHREF_SOURCE_DIR "/golden");
+  const auto report = pathref::golden::check_directory(pathref::testing::source_dir() + "/golden");
   REQUIRE(report.cases.size() > 0);
   for (const auto& c : report.cases) {
     INFO(c.file << " rule " << c.rule << " tcId " << c.tc_id << ": " << c.message);
@@ -45,7 +46,7 @@ TEST_CASE("golden: tolerance comparison is max(abs, rel*|expected|)", "[golden]"
 }
 
 TEST_CASE("golden: every registered rule has a golden file", "[golden][traceability]") {
-  const auto report = pathref::golden::check_directory(PATHREF_SOURCE_DIR "/golden");
+  const auto report = pathref::golden::check_directory(pathref::testing::source_dir() + "/golden");
   for (const auto& rule : pathref::rules::registry().all()) {
     INFO("rule " << rule.id);
     const bool covered = std::any_of(report.cases.begin(), report.cases.end(),

@@ -15,6 +15,7 @@
 #include "pathref/planners/planner.hpp"
 #include "pathref/planners/search.hpp"
 #include "pathref/rng/mt19937.hpp"
+#include "support/paths.hpp"
 
 using namespace pathref;
 using grid::Cell;
@@ -234,7 +235,7 @@ TEST_CASE("han.plan.iaco: every reading's golden vector differs from the default
   // golden/han-iaco/han.plan.iaco.json note Discriminating: tcIds 3-11 select one reading each on
   // the map, seed and colony size of tcId 2; each must change the best path and the best-length
   // curve, or an implementation ignoring the option would pass its vector.
-  std::ifstream in(std::string(PATHREF_SOURCE_DIR) + "/golden/han-iaco/han.plan.iaco.json");
+  std::ifstream in(pathref::testing::source_dir() + "/golden/han-iaco/han.plan.iaco.json");
   REQUIRE(in.good());
   const Json doc = Json::parse(in);
   std::map<std::int64_t, Json> by_id;

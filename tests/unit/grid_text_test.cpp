@@ -10,6 +10,7 @@
 
 #include "pathref/core/error.hpp"
 #include "pathref/io/grid_text.hpp"
+#include "support/paths.hpp"
 
 using pathref::ParseError;
 using pathref::grid::Cell;
@@ -216,7 +217,7 @@ TEST_CASE("grid-text: read_grid_file reads a file and names it in errors", "[gri
 }
 
 TEST_CASE("grid-text: the shipped sample tests/data/grid/office.grid reads and round-trips", "[grid_text]") {
-  const MapFile m = pathref::io::read_grid_file(std::string(PATHREF_SOURCE_DIR) + "/tests/data/grid/office.grid");
+  const MapFile m = pathref::io::read_grid_file(pathref::testing::source_dir() + "/tests/data/grid/office.grid");
   CHECK(m.name == "office-floor");
   CHECK(m.grid.width() == 32);
   CHECK(m.grid.height() == 12);

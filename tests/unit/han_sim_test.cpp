@@ -17,12 +17,13 @@
 #include "pathref/sim/motion.hpp"
 #include "pathref/sim/random_map.hpp"
 #include "pathref/sim/simulate.hpp"
+#include "support/paths.hpp"
 
 using namespace pathref;
 using sim::Vec2;
 
 namespace {
-std::string data(const std::string& name) { return std::string(PATHREF_SOURCE_DIR) + "/tests/data/sim/" + name; }
+std::string data(const std::string& name) { return pathref::testing::source_dir() + "/tests/data/sim/" + name; }
 std::string slurp(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   std::stringstream ss;
@@ -30,7 +31,7 @@ std::string slurp(const std::string& path) {
   return ss.str();
 }
 sim::Scenario load(const std::string& name) {
-  return sim::parse_scenario(slurp(data(name)), name, std::string(PATHREF_SOURCE_DIR) + "/tests/data/sim");
+  return sim::parse_scenario(slurp(data(name)), name, pathref::testing::source_dir() + "/tests/data/sim");
 }
 std::string parse_error(const std::string& text) {
   try {

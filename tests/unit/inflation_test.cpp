@@ -12,6 +12,7 @@
 #include "pathref/geometry/inflation.hpp"
 #include "pathref/geometry/scene.hpp"
 #include "pathref/rules/registry.hpp"
+#include "support/paths.hpp"
 
 using namespace pathref;
 using namespace pathref::geometry;
@@ -109,7 +110,7 @@ TEST_CASE("inflation.cell-blocked: the interior counts, not only the edges", "[i
 }
 
 TEST_CASE("inflation.cell-blocked: fast grid equals the definition on a non-convex sample scene", "[inflation]") {
-  const Scene s = read_scene_file(PATHREF_SOURCE_DIR "/tests/data/scenes/ushape.json");
+  const Scene s = read_scene_file(pathref::testing::source_dir() + "/tests/data/scenes/ushape.json");
   const grid::Grid g = inflate_polygons(s);
   for (std::int64_t y = 0; y < s.height; ++y)
     for (std::int64_t x = 0; x < s.width; ++x) CHECK(g.blocked({x, y}) == cell_blocked(s, {x, y}));
@@ -197,7 +198,7 @@ TEST_CASE("formats.scene: reader errors carry a JSON pointer", "[inflation][form
 }
 
 TEST_CASE("formats.scene: to_scene_json round trip keeps every number exact", "[inflation][formats]") {
-  const Scene s = read_scene_file(PATHREF_SOURCE_DIR "/tests/data/scenes/ushape.json");
+  const Scene s = read_scene_file(pathref::testing::source_dir() + "/tests/data/scenes/ushape.json");
   CHECK(parse_scene_json(to_scene_json(s), "again.json") == s);
   CHECK(to_string(s.polygons[0].vertices[0].x) == "2.3");
 }

@@ -13,6 +13,7 @@
 #include "pathref/io/map_file.hpp"
 #include "pathref/io/matrix.hpp"
 #include "pathref/planners/search.hpp"
+#include "support/paths.hpp"
 
 using pathref::ParseError;
 using pathref::grid::Cell;
@@ -119,7 +120,7 @@ TEST_CASE("matrix: limits are checked while reading, before the grid exists", "[
 }
 
 TEST_CASE("matrix: the samples in tests/data read the same map and round-trip", "[matrix][samples]") {
-  const std::string dir = std::string(PATHREF_SOURCE_DIR) + "/tests/data/matrix/";
+  const std::string dir = pathref::testing::source_dir() + "/tests/data/matrix/";
   const LoadedMapFile m = load_map_file(dir + "warehouse.m", {});
   const LoadedMapFile t = load_map_file(dir + "warehouse.txt", {});
   CHECK(m.format == MapFormat::matrix);
@@ -135,7 +136,7 @@ TEST_CASE("matrix: the samples in tests/data read the same map and round-trip", 
 
 TEST_CASE("matrix: shared MATLAB maps B and C give the published strict-policy optima",
           "[matrix][shared]") {
-  const std::string dir = std::string(PATHREF_SHARED_DIR) + "/data/matlab-maps/";
+  const std::string dir = pathref::testing::shared_dir() + "/data/matlab-maps/";
   if (!std::filesystem::exists(dir)) {
     WARN("skipped: " << dir << " is absent");
     return;

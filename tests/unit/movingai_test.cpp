@@ -11,6 +11,7 @@
 #include "pathref/io/map_file.hpp"
 #include "pathref/io/movingai.hpp"
 #include "pathref/planners/search.hpp"
+#include "support/paths.hpp"
 
 using pathref::ParseError;
 using pathref::grid::Cell;
@@ -315,7 +316,7 @@ TEST_CASE("map files: format detection, loading, writing", "[movingai][map_file]
 
 TEST_CASE("movingai: the samples in tests/data read, round-trip and agree with their scenarios",
           "[movingai][scen][samples]") {
-  const std::string dir = std::string(PATHREF_SOURCE_DIR) + "/tests/data/movingai/";
+  const std::string dir = pathref::testing::source_dir() + "/tests/data/movingai/";
   const LoadedMapFile lm = load_map_file(dir + "rooms40x30.map", {});
   CHECK(lm.format == MapFormat::movingai);
   const Grid& g = lm.map.grid;

@@ -11,6 +11,7 @@
 #include "pathref/core/error.hpp"
 #include "pathref/io/map_file.hpp"
 #include "pathref/io/ros_map.hpp"
+#include "support/paths.hpp"
 
 using pathref::ParseError;
 using pathref::grid::Cell;
@@ -29,7 +30,7 @@ using pathref::io::UnknownAs;
 
 namespace {
 
-const std::string data_dir = std::string(PATHREF_SOURCE_DIR) + "/tests/data/ros/";
+const std::string data_dir = pathref::testing::source_dir() + "/tests/data/ros/";
 
 std::string yaml_error(const std::string& text, bool lenient = false) {
   try {

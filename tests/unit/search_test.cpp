@@ -15,6 +15,7 @@
 #include "pathref/equations/metrics.hpp"
 #include "pathref/planners/planner.hpp"
 #include "pathref/planners/search.hpp"
+#include "support/paths.hpp"
 
 using namespace pathref;
 using grid::Cell;
@@ -265,7 +266,7 @@ TEST_CASE("planners: astar and dijkstra are registered and fill the Result", "[s
 }
 
 TEST_CASE("search.astar: MATLAB 20x20 maps B and C (shared data)", "[search][data]") {
-  const std::string dir = PATHREF_SHARED_DIR "/data/matlab-maps/";
+  const std::string dir = pathref::testing::shared_dir() + "/data/matlab-maps/";
   const auto map_b = read_01_map(dir + "mapB_20x20_ga.txt");
   const auto map_c = read_01_map(dir + "mapC_20x20_winsleo_traditional.txt");
   if (!map_b || !map_c) {
