@@ -15,6 +15,7 @@
 #include "pathref/io/map_file.hpp"
 #include "pathref/io/plan_json.hpp"
 #include "pathref/io/svg.hpp"
+#include "pathref/planners/default_policy.hpp"
 #include "pathref/planners/planner.hpp"
 
 namespace pathref::cli {
@@ -31,7 +32,7 @@ struct PlanOptions {
   std::optional<std::string> start;  ///< nullopt: not given (an empty --start "" is an error)
   std::optional<std::string> goal;
   std::string seed = "1";  ///< decimal text; parsed by parse_seed (CLI11 would read 010 as octal)
-  std::string policy = "strict";
+  std::string policy;  ///< empty: the planner's default corner policy
   std::vector<std::string> sets;
   bool json = false;
   std::string json_out;
@@ -162,14 +163,40 @@ std::string cells_text(const std::vector<grid::Cell>& path) {
   return out;
 }
 
+/// Why a run found no path, from its extra.failure (spec/cli.md#plan, "Exit codes"): only a
+/// search that exhausted the reachable cells proves the goal unreachable; a stochastic planner that
+/// gave up says what it gave up on.
+std::string why_not_found(const planners::Result& r) {
+  const std::string failure =
+      r.extra.is_object() && r.extra.contains("failure") && r.extra.at("failure").is_string()
+          ? r.extra.at("failure").get<std::string>()
+          : std::string();
+  if (failure == "init_attempts_exhausted")
+    return fmt::format(
+        "failure init_attempts_exhausted: the GA initialisation gave up after {} random chains, "
+        "init_attempts of one individual all rejected; this does not mean the goal is unreachable "
+        "(try another seed, --set init_attempts=N or --set illegal_step=repair)",
+        r.extra.value("init_chains", std::int64_t{0}));
+  if (failure == "row_blocked")
+    return "failure row_blocked: a row between start and goal has no free cell, so the goal is not "
+           "reachable";
+  if (!failure.empty()) return "failure " + failure;
+  if (r.iterations > 0 || !r.best_per_iteration.empty())
+    return "no ant or individual reached the goal in the iterations run; this does not prove the "
+           "goal unreachable";
+  return "the goal is not reachable";
+}
+
 /// The human-readable report of a run: what was used, then what came out.
-void print_report(const io::PlanRecord& rec, const grid::Grid& g, const Json& j) {
+void print_report(const io::PlanRecord& rec, const grid::Grid& g, const Json& j,
+                  bool policy_is_default) {
   fmt::print("pathref {} plan\n", PATHREF_VERSION);
   fmt::print("  map         {} ({}{}, {}x{}, {} blocked cells)\n", rec.map.name, rec.map.kind,
              rec.map.file ? " " + *rec.map.file : std::string(), g.width(), g.height(),
              g.blocked_count());
   fmt::print("  algo        {}\n", rec.algo);
-  fmt::print("  policy      {} ({})\n", grid::to_string(rec.policy), policy_meaning(rec.policy));
+  fmt::print("  policy      {} ({}){}\n", grid::to_string(rec.policy), policy_meaning(rec.policy),
+             policy_is_default ? ", the planner's default" : "");
   fmt::print("  seed        {}\n", rec.seed);
   std::string params;
   for (const auto& [k, v] : rec.params.items())
@@ -179,7 +206,11 @@ void print_report(const io::PlanRecord& rec, const grid::Grid& g, const Json& j)
   fmt::print("  goal        ({}, {})\n", rec.goal.x, rec.goal.y);
   const planners::Result& r = rec.result;
   fmt::print("result\n");
-  fmt::print("  found       {}\n", r.found ? "yes" : "no (the goal is not reachable)");
+  fmt::print("  found       {}\n", r.found ? std::string("yes") : "no (" + why_not_found(r) + ")");
+  if (r.found && r.extra.is_object() && r.extra.value("init_exhausted", false))
+    fmt::print("  note        the GA initialisation gave up after {} chains (init_attempts_exhausted): the GA "
+               "population is only the {} ant path(s)\n",
+               r.extra.value("init_chains", std::int64_t{0}), r.extra.value("population_aco", std::int64_t{0}));
   if (r.found) {
     fmt::print("  length      {}\n", r.length);
     fmt::print("  turns       {}\n", j.at("turns").get<std::int64_t>());
@@ -232,7 +263,9 @@ int run_plan(const PlanOptions& o) {
                                  known.empty() ? "none registered" : known));
   }
   const std::uint32_t seed = parse_seed(o.seed);
-  const grid::CornerPolicy policy = grid::parse_corner_policy(o.policy);
+  const bool policy_is_default = o.policy.empty();
+  const grid::CornerPolicy policy =
+      policy_is_default ? planners::default_policy(o.algo) : grid::parse_corner_policy(o.policy);
   const Json overrides = parse_sets(o.sets);
   // Validates every --set key and type before anything runs (UsageError names a bad key).
   const Json merged = planners::merge_params(planner->defaults, overrides);
@@ -264,7 +297,7 @@ int run_plan(const PlanOptions& o) {
   if (o.json)
     fmt::print("{}\n", j.dump(2));
   else
-    print_report(rec, g, j);
+    print_report(rec, g, j, policy_is_default);
   if (!o.json) {
     if (!o.json_out.empty()) fmt::print("wrote {}\n", o.json_out);
     if (!o.svg.empty()) fmt::print("wrote {}\n", o.svg);
@@ -325,10 +358,11 @@ void add_plan_commands(CLI::App& app, Action& run) {
   plan->add_option("--seed", o.seed, "seed of the random stream, 0 to 4294967295 (spec/rng.md)")
       ->type_name("N")
       ->capture_default_str();  // a string, parsed by parse_seed
-  plan->add_option("--policy", o.policy, "corner policy for diagonal moves (spec/grid.md)")
+  plan->add_option("--policy", o.policy,
+                   "corner policy for diagonal moves (spec/grid.md); default: the planner's "
+                   "(strict; always for aco-classic and ga-classic)")
       ->type_name("POLICY")
-      ->check(CLI::IsMember({"never", "strict", "one", "always"}))
-      ->capture_default_str();
+      ->check(CLI::IsMember({"never", "strict", "one", "always"}));
   plan->add_option("--set", o.sets, "planner parameter key=value (repeatable; value JSON or plain string)")
       ->type_name("KEY=VALUE");
   add_map_read_options(plan, o.read);

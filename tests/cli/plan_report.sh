@@ -18,7 +18,7 @@ expect() {
 expect "$tmp/a.txt" \
   '^  map +grid20 \(builtin, 20x20, 92 blocked cells\)$' \
   '^  algo +astar$' \
-  '^  policy +strict \(diagonal needs both orthogonal neighbours free\)$' \
+  '^  policy +strict \(diagonal needs both orthogonal neighbours free\), the planner'"'"'s default$' \
   '^  seed +1$' \
   '^  params +heuristic=octile$' \
   '^  start +\(0, 0\)$' '^  goal +\(19, 19\)$' \

@@ -224,7 +224,8 @@ genetic::InitOutcome literal_init(const Grid& g, Cell start, Cell goal, CornerPo
       }
       genes.push_back(goal);
       ++out.chains;
-      const ga::ChainRepair rep = ga::connect_chain(g, genes, policy, c.mid_rounding, c.init_reject);
+      const ga::ChainRepair rep =
+          ga::connect_chain(g, genes, policy, c.mid_rounding, c.init_reject, c.illegal_step);
       if (rep.feasible) {
         out.paths.push_back(rep.path);
         done = true;
@@ -257,6 +258,34 @@ void check_init_equals_literal(const Grid& g, Cell start, Cell goal, CornerPolic
 
 }  // namespace
 
+TEST_CASE("prop: shi2022.op.init corner repair accepts every chain rejection accepts, unchanged") {
+  // illegal_step = repair differs from reject only where reject gives up ("illegal_step"): a
+  // chain that reject repairs meets no disallowed continuous pair, so repair makes the same path.
+  // A chain that only repair accepts is a valid path through its genes.
+  rc::prop("repair extends reject", [] {
+    const Scenario sc = gen_scenario(0.35);
+    const int m = *rc::gen::inRange(0, 4);
+    Path genes{sc.start};
+    for (int i = 0; i < m; ++i)
+      genes.push_back(Cell{*rc::gen::inRange<std::int64_t>(0, sc.g.width()),
+                           *rc::gen::inRange<std::int64_t>(0, sc.g.height())});
+    genes.push_back(sc.goal);
+    const auto rej = *rc::gen::element(ga::InitReject::blocked, ga::InitReject::shift);
+    const ga::ChainRepair lit =
+        ga::connect_chain(sc.g, genes, sc.policy, ga::MidRounding::floor, rej, ga::IllegalStep::reject);
+    const ga::ChainRepair rep =
+        ga::connect_chain(sc.g, genes, sc.policy, ga::MidRounding::floor, rej, ga::IllegalStep::repair);
+    if (lit.feasible) {
+      RC_ASSERT(rep.feasible);
+      RC_ASSERT(rep.path == lit.path);
+    } else if (lit.reason != "illegal_step") {
+      RC_ASSERT(rep.reason == lit.reason);  // a blocked gene or insert is found before any corner
+    }
+    if (rep.feasible) RC_ASSERT(valid(sc, rep.path));
+    RC_TAG(lit.feasible ? "both" : (rep.feasible ? "repair only" : "neither"));
+  });
+}
+
 TEST_CASE("prop: shi2022.plan.ga initialisation by pair verdicts equals repairing whole chains") {
   rc::prop("initial_paths == the literal step 2", [] {
     const int w = *rc::gen::inRange(1, 10);
@@ -279,6 +308,7 @@ TEST_CASE("prop: shi2022.plan.ga initialisation by pair verdicts equals repairin
     c.mid_rounding = *rc::gen::element(ga::MidRounding::floor, ga::MidRounding::ceil,
                                        ga::MidRounding::half_even);
     c.init_attempts = *rc::gen::inRange<std::int64_t>(1, 300);
+    c.illegal_step = *rc::gen::element(ga::IllegalStep::repair, ga::IllegalStep::reject);
     const CornerPolicy policy = *testing::gen_policy();
     const auto count = *rc::gen::inRange<std::int64_t>(1, 5);
     check_init_equals_literal(g, start, goal, policy, c, *rc::gen::arbitrary<std::uint32_t>(), count);

@@ -264,11 +264,14 @@ TEST_CASE("prop_fitness_factors_positive", "[shi2022][prop]") {
                                               *rc::gen::inRange(1, 11), *rc::gen::inRange(2, 11), 0.5);
     const auto path = *gen_nodes_in(g, 2, 12);
     const double f1 = ga::inverse_length(metrics::path_length(path));
-    const double f2 = ga::smoothness_factor(path);
+    const double f2n = ga::smoothness_factor(path, ga::SmoothnessReading::per_node);
+    const double f2 = ga::smoothness_factor(path);  // inverse_total_plus_one
     const double f3 = ga::safety_factor(g, path);
     RC_ASSERT(f1 > 0.0);
-    if (path.size() >= 3) RC_ASSERT(f2 > 0.0);
-    RC_ASSERT(f2 <= static_cast<double>(path.size() - 2));
+    if (path.size() >= 3) RC_ASSERT(f2n > 0.0);
+    RC_ASSERT(f2n <= static_cast<double>(path.size() - 2));
+    RC_ASSERT(f2 > 0.0);
+    RC_ASSERT(f2 <= 1.0);
     RC_ASSERT(f3 > 0.0);
     RC_ASSERT(f3 <= static_cast<double>(path.size() - 1));
     RC_ASSERT(ga::weighted_fitness(f1, f2, f3) > 0.0);
@@ -306,10 +309,26 @@ TEST_CASE("prop_turn_band_agrees_with_turning_angle", "[shi2022][prop]") {
   });
 }
 
+TEST_CASE("prop_smoothness_inverse_total_plus_one_orders_by_total_penalty", "[shi2022][prop]") {
+  rc::prop("1/(1 + T): 1 iff turn-free; else 1/(1 + 1/inverse_total) up to rounding, < 1", [] {
+    const auto path = *gen_walk(25);
+    const double f2 = ga::smoothness_factor(path);
+    RC_ASSERT(f2 > 0.0);
+    RC_ASSERT(f2 <= 1.0);
+    if (metrics::turn_count(path) == 0) {
+      RC_ASSERT(f2 == 1.0);
+    } else {
+      const double total = 1.0 / ga::smoothness_factor(path, ga::SmoothnessReading::inverse_total);
+      RC_ASSERT(f2 < 1.0);
+      RC_ASSERT(std::abs(f2 - 1.0 / (1.0 + total)) <= 1e-12 * f2);
+    }
+  });
+}
+
 TEST_CASE("prop_smoothness_per_node_each_term_in_unit_interval", "[shi2022][prop]") {
   rc::prop("per_node: 0 <= fit_2 <= n - 2; a straight walk scores exactly n - 2", [] {
     const auto path = *gen_walk(25);
-    const double f2 = ga::smoothness_factor(path);
+    const double f2 = ga::smoothness_factor(path, ga::SmoothnessReading::per_node);
     const double interior = path.size() >= 2 ? static_cast<double>(path.size() - 2) : 0.0;
     RC_ASSERT(f2 >= 0.0);
     RC_ASSERT(f2 <= interior);

@@ -62,17 +62,37 @@ TEST_CASE("shi2022.op.init: chain repair inserts mid-points, drops repeats, reje
   // A repeated gene is dropped.
   CHECK(ga::connect_chain(free5, Path{{0, 0}, {0, 0}, {1, 1}}, CornerPolicy::strict).path ==
         Path{{0, 0}, {1, 1}});
-  // A blocked mid-point rejects the chain; a blocked gene too.
+  // A blocked mid-point rejects the chain under init_reject = blocked; under the default shift
+  // it moves to a free orthogonal neighbour; a blocked gene is rejected either way.
   Grid g = open_grid(5, 5);
   g.set_blocked(Cell{2, 1}, true);
-  CHECK(ga::connect_chain(g, genes, CornerPolicy::strict).reason == "blocked_insert");
+  CHECK(ga::connect_chain(g, genes, CornerPolicy::strict, ga::MidRounding::floor,
+                          ga::InitReject::blocked)
+            .reason == "blocked_insert");
+  CHECK(ga::connect_chain(g, genes, CornerPolicy::strict).path ==
+        Path{{0, 0}, {1, 1}, {1, 2}, {2, 2}, {3, 2}, {3, 1}, {4, 2}});
   CHECK(ga::connect_chain(g, Path{{0, 0}, {2, 1}, {4, 2}}, CornerPolicy::strict).reason ==
         "blocked_gene");
-  // A corner-cutting diagonal is an illegal step under strict, allowed under always.
+  // A corner-cutting diagonal is not continuous under strict (illegal_step = repair, default):
+  // the free orthogonal cell (0,1) is inserted; under reject it is an illegal step; under
+  // always it is a move.
   Grid h = open_grid(3, 3);
   h.set_blocked(Cell{1, 0}, true);
+  const ga::ChainRepair corner = ga::connect_chain(h, Path{{0, 0}, {1, 1}}, CornerPolicy::strict);
+  CHECK(corner.feasible);
+  CHECK(corner.path == Path{{0, 0}, {0, 1}, {1, 1}});
+  CHECK(ga::connect_chain(h, Path{{0, 0}, {1, 1}}, CornerPolicy::strict, ga::MidRounding::floor,
+                          ga::InitReject::blocked, ga::IllegalStep::reject)
+            .reason == "illegal_step");
+  CHECK(ga::connect_chain(h, Path{{0, 0}, {1, 1}}, CornerPolicy::always).path == Path{{0, 0}, {1, 1}});
+  // Both orthogonal cells blocked: rejected under repair too.
+  h.set_blocked(Cell{0, 1}, true);
   CHECK(ga::connect_chain(h, Path{{0, 0}, {1, 1}}, CornerPolicy::strict).reason == "illegal_step");
-  CHECK(ga::connect_chain(h, Path{{0, 0}, {1, 1}}, CornerPolicy::always).feasible);
+  // Under never every diagonal is repaired, horizontal cell first: (1,0) then (1,1).
+  CHECK(ga::connect_chain(free5, Path{{0, 0}, {1, 1}}, CornerPolicy::never).path ==
+        Path{{0, 0}, {1, 0}, {1, 1}});
+  CHECK(ga::parse_illegal_step("reject") == ga::IllegalStep::reject);
+  CHECK_THROWS_AS(ga::parse_illegal_step("cut"), UsageError);
   // near_obstacle rejects an inserted cell next to an obstacle.
   Grid k = open_grid(5, 5);
   k.set_blocked(Cell{2, 3}, true);

@@ -201,12 +201,18 @@ TEST_CASE("shi2022.eq16: the smoothness readings on the spec's example paths", "
   const std::vector<Cell> B{{0, 0}, {1, 0}, {2, 0}, {3, 1}, {4, 2}};
   const std::vector<Cell> C{{0, 0}, {1, 0}, {2, 0}, {2, 1}, {2, 2}};
   const std::vector<Cell> E{{0, 0}, {1, 1}, {2, 0}, {3, 1}, {4, 0}};
-  const double a = ga::smoothness_factor(A);
-  const double b = ga::smoothness_factor(B);
-  const double c = ga::smoothness_factor(C);
-  const double e = ga::smoothness_factor(E);
+  const double a = ga::smoothness_factor(A, SmoothnessReading::per_node);
+  const double b = ga::smoothness_factor(B, SmoothnessReading::per_node);
+  const double c = ga::smoothness_factor(C, SmoothnessReading::per_node);
+  const double e = ga::smoothness_factor(E, SmoothnessReading::per_node);
   CHECK(a == 3.0);
   CHECK((a > b && b > c && c > e));  // per_node ranks fewer and gentler turns higher
+  // The default, inverse_total_plus_one: 1 / (1 + total penalty); 1 without turns.
+  CHECK(ga::smoothness_factor(A) == 1.0);
+  CHECK(ga::smoothness_factor(B) == 1.0 / 6.0);
+  CHECK(ga::smoothness_factor(C) == 1.0 / 101.0);
+  CHECK(ga::smoothness_factor(E) == 1.0 / 301.0);
+  CHECK(ga::smoothness_factor(std::vector<Cell>{{0, 0}, {1, 0}}) == 1.0);
   CHECK(ga::smoothness_factor(A, SmoothnessReading::per_turn) == 0.0);
   CHECK(ga::smoothness_factor(A, SmoothnessReading::angle_times_penalty) == 0.0);
   CHECK(ga::smoothness_factor(B, SmoothnessReading::angle_times_penalty) ==

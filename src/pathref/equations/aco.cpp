@@ -74,6 +74,13 @@ double eta_goal_directed(grid::Cell i, grid::Cell j, grid::Cell goal) {
   return 1.0 / (d_ij + d_je);
 }
 
+double eta_goal_inverse(grid::Cell j, grid::Cell goal, double at_goal) {
+  require(std::isfinite(at_goal) && at_goal > 0.0, "the goal's eta must be finite and > 0");
+  const double d = metrics::centre_distance(j, goal);  // checks the coordinates
+  if (j == goal) return at_goal;
+  return 1.0 / d;
+}
+
 double pheromone_update(double tau, double rho, double delta) {
   require(finite_nonneg(tau), "tau must be finite and >= 0");
   require(std::isfinite(rho) && rho > 0.0 && rho < 1.0, "rho must lie in (0, 1)");

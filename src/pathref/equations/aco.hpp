@@ -83,6 +83,17 @@ void transition_weights_into(std::span<const double> tau, std::span<const double
 /// Golden: golden/shi2022/shi2022.eq12.json
 [[nodiscard]] double eta_goal_directed(grid::Cell i, grid::Cell j, grid::Cell goal);
 
+/// Goal-only heuristic eta_j = 1 / d_jE of the classic MATLAB ant-colony script (the Euclidean
+/// distance from the centre of the candidate cell j to the goal's, metrics::centre_distance),
+/// evaluated 1.0 / d_jE; at the goal itself (d = 0) eta is the given constant `at_goal` (the
+/// script's Eta(E) = 100). Depends on j only, not on the current cell.
+/// Source: the classic ACO grid script (../shared/data/matlab-maps/README.txt, yiqun2.m).
+/// Spec: classic.plan.aco
+/// Pre: |coordinates| <= 2^25; at_goal finite > 0 (DomainError).
+/// Post: > 0; = at_goal iff j == goal; strictly decreasing in d_jE elsewhere.
+/// Golden: golden/classic/classic.plan.aco.json (through the planner)
+[[nodiscard]] double eta_goal_inverse(grid::Cell j, grid::Cell goal, double at_goal);
+
 /// Pheromone update tau(t+1) = (1 - rho) tau(t) + delta, evaluated as ((1 - rho) * tau) + delta.
 /// Source: Shi et al. 2022, Eq. (5), Sec. 4.1, doi:10.3389/fbioe.2022.905983.
 /// Spec: shi2022.eq5

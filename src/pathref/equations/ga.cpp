@@ -132,8 +132,10 @@ SmoothnessReading parse_smoothness_reading(std::string_view name) {
   if (name == "per_turn") return SmoothnessReading::per_turn;
   if (name == "angle_times_penalty") return SmoothnessReading::angle_times_penalty;
   if (name == "inverse_total") return SmoothnessReading::inverse_total;
+  if (name == "inverse_total_plus_one") return SmoothnessReading::inverse_total_plus_one;
   throw UsageError("unknown smoothness reading '" + std::string(name) +
-                   "' (expected per_node, per_turn, angle_times_penalty or inverse_total)");
+                   "' (expected per_node, per_turn, angle_times_penalty, inverse_total or "
+                   "inverse_total_plus_one)");
 }
 
 double smoothness_factor(std::span<const grid::Cell> path, SmoothnessReading reading,
@@ -159,12 +161,21 @@ double smoothness_factor(std::span<const grid::Cell> path, SmoothnessReading rea
         if (!straight) sum += 1.0 / (p * theta[k - 1]);
         break;
       case SmoothnessReading::inverse_total:
+      case SmoothnessReading::inverse_total_plus_one:
         if (!straight) sum += p;
         break;
     }
   }
+  if (reading == SmoothnessReading::inverse_total_plus_one) {
+    const double total = 1.0 + sum;  // 1 + (P_1 + P_2 + ...), the penalties added left to right
+    require(std::isfinite(total), "the total penalty overflows");
+    return 1.0 / total;
+  }
   if (reading == SmoothnessReading::inverse_total) {
-    require(turns > 0, "inverse_total: a path without turns has total penalty 0 (1/0)");
+    require(turns > 0,
+            "smoothness = inverse_total: a path without turns has total penalty 0 and 1/0 is "
+            "undefined (the classic MATLAB GA script fails there too); "
+            "smoothness = inverse_total_plus_one is defined for every path");
     require(std::isfinite(sum), "the total penalty overflows");
     return 1.0 / sum;
   }

@@ -122,13 +122,15 @@ struct TurnPenalties {
 
 /// How the penalties enter fit_2 = sum 1/theta (spec shi2022.eq16, "Reading").
 enum class SmoothnessReading {
-  per_node,             ///< sum over interior nodes of 1/P, P = 1 straight, else the band's penalty (default)
+  per_node,             ///< sum over interior nodes of 1/P, P = 1 straight, else the band's penalty
   per_turn,             ///< sum over turning nodes of 1/P (straight nodes add 0)
   angle_times_penalty,  ///< sum over turning nodes of 1/(P * theta), theta in radians
   inverse_total,        ///< 1 / (sum over turning nodes of P); DomainError for a turn-free path
+  inverse_total_plus_one,  ///< 1 / (1 + sum over turning nodes of P); 1 for a turn-free path
+                           ///< (the planners' default, spec shi2022.eq16 "Reading")
 };
-/// "per_node" | "per_turn" | "angle_times_penalty" | "inverse_total" -> SmoothnessReading;
-/// UsageError otherwise. Spec: shi2022.eq16.
+/// "per_node" | "per_turn" | "angle_times_penalty" | "inverse_total" | "inverse_total_plus_one"
+/// -> SmoothnessReading; UsageError otherwise. Spec: shi2022.eq16.
 [[nodiscard]] SmoothnessReading parse_smoothness_reading(std::string_view name);
 
 /// Smoothness factor fit_2 of a path (Eq. 16), from the turning bands (turn_band) and, for
@@ -140,10 +142,12 @@ enum class SmoothnessReading {
 /// Pre: the metrics path domain; penalties finite and > 0 (DomainError); inverse_total needs at
 /// least one turn (DomainError).
 /// Post (per_node): 0 <= fit_2 <= n - 2; > 0 when n >= 3; each straight node adds exactly 1.
-/// Interpretation: SmoothnessReading (default per_node).
+/// Post (inverse_total_plus_one): 0 < fit_2 <= 1, == 1 iff the path has no turn; strictly
+/// decreasing in the total penalty.
+/// Interpretation: SmoothnessReading (default inverse_total_plus_one).
 /// Golden: golden/shi2022/shi2022.eq16.json
 [[nodiscard]] double smoothness_factor(std::span<const grid::Cell> path,
-                                       SmoothnessReading reading = SmoothnessReading::per_node,
+                                       SmoothnessReading reading = SmoothnessReading::inverse_total_plus_one,
                                        TurnPenalties penalties = TurnPenalties{});
 
 /// What S_i of Eq. (18) counts (spec shi2022.eq18).

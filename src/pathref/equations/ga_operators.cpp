@@ -26,6 +26,16 @@ std::string_view to_string(InitReject v) noexcept {
   return "?";
 }
 
+IllegalStep parse_illegal_step(std::string_view name) {
+  if (name == "repair") return IllegalStep::repair;
+  if (name == "reject") return IllegalStep::reject;
+  throw UsageError("unknown illegal_step '" + std::string(name) + "' (expected repair or reject)");
+}
+
+std::string_view to_string(IllegalStep v) noexcept {
+  return v == IllegalStep::repair ? "repair" : "reject";
+}
+
 namespace {
 
 /// Hash of a cell for crossover_points' table (splitmix64 finaliser of x, mixed with y).
@@ -56,14 +66,15 @@ bool has_blocked_neighbour(const grid::Grid& g, grid::Cell c) {
 
 std::string_view connect_chain_into(const grid::Grid& g, std::span<const grid::Cell> genes,
                                    grid::CornerPolicy policy, MidRounding rounding, InitReject rej,
-                                   std::vector<grid::Cell>& p) {
+                                   IllegalStep illegal, std::vector<grid::Cell>& p) {
   std::int64_t shifts = 0;
-  return connect_chain_into(g, genes, policy, rounding, rej, p, shifts);
+  return connect_chain_into(g, genes, policy, rounding, rej, illegal, p, shifts);
 }
 
 std::string_view connect_chain_into(const grid::Grid& g, std::span<const grid::Cell> genes,
                                    grid::CornerPolicy policy, MidRounding rounding, InitReject rej,
-                                   std::vector<grid::Cell>& p, std::int64_t& inserted) {
+                                   IllegalStep illegal, std::vector<grid::Cell>& p,
+                                   std::int64_t& inserted) {
   inserted = 0;
   require(genes.size() >= 2, "a chain needs at least two genes (start and goal)");
   for (const grid::Cell c : genes) require(g.in_bounds(c), "a gene lies outside the grid");
@@ -80,8 +91,20 @@ std::string_view connect_chain_into(const grid::Grid& g, std::span<const grid::C
       continue;
     }
     if (d == 1) {
-      if (!grid::step_allowed(g, a, b, policy)) return "illegal_step";
-      ++k;
+      if (grid::step_allowed(g, a, b, policy)) {
+        ++k;
+        continue;
+      }
+      // Not an allowed move: only a diagonal can be (a and b are free 8-neighbours). Under
+      // `repair` it is "not continuous" (Sec. 4.2 step 2): insert the first free orthogonal
+      // cell, (b.x, a.y) then (a.x, b.y) (o_1, o_2 of grid.corner-policy); a -> o and o -> b are
+      // orthogonal steps between free cells, allowed under every policy.
+      if (illegal == IllegalStep::reject || a.x == b.x || a.y == b.y) return "illegal_step";
+      const grid::Cell o1{b.x, a.y};
+      const grid::Cell o2{a.x, b.y};
+      const grid::Cell* o = g.free(o1) ? &o1 : (g.free(o2) ? &o2 : nullptr);
+      if (o == nullptr) return "illegal_step";
+      p.insert(p.begin() + static_cast<std::ptrdiff_t>(k + 1), *o);
       continue;
     }
     grid::Cell m = insertion_cell(a, b, rounding);
@@ -108,13 +131,56 @@ std::string_view connect_chain_into(const grid::Grid& g, std::span<const grid::C
 }
 
 ChainRepair connect_chain(const grid::Grid& g, std::span<const grid::Cell> genes,
-                          grid::CornerPolicy policy, MidRounding rounding, InitReject rej) {
+                          grid::CornerPolicy policy, MidRounding rounding, InitReject rej,
+                          IllegalStep illegal) {
   ChainRepair r;
   std::vector<grid::Cell> p;
-  r.reason = std::string(connect_chain_into(g, genes, policy, rounding, rej, p));
+  r.reason = std::string(connect_chain_into(g, genes, policy, rounding, rej, illegal, p));
   r.feasible = r.reason == "ok";
   if (r.feasible) r.path = std::move(p);
   return r;
+}
+
+std::vector<CrossPoint> crossover_points_any(std::span<const grid::Cell> a,
+                                             std::span<const grid::Cell> b) {
+  std::vector<CrossPoint> out;
+  if (a.size() < 3) return out;
+  std::unordered_map<grid::Cell, std::size_t, CellHash> first;  // b's first position of each cell
+  first.reserve(b.size());
+  for (std::size_t j = 0; j < b.size(); ++j) first.emplace(b[j], j);
+  for (std::size_t k = 1; k + 1 < a.size(); ++k) {
+    const auto it = first.find(a[k]);
+    if (it != first.end()) out.push_back(CrossPoint{k, it->second});
+  }
+  return out;
+}
+
+std::size_t round_choice(double u, std::size_t n) {
+  require(n >= 1, "round_choice needs at least one item");
+  require(u >= 0.0 && u < 1.0, "round_choice needs u in [0, 1)");
+  const double r = std::round(u * static_cast<double>(n - 1));  // half away from zero
+  const auto c = static_cast<std::size_t>(r);
+  return c < n ? c : n - 1;
+}
+
+std::optional<std::vector<grid::Cell>> segment_mutation(const grid::Grid& g,
+                                                        std::span<const grid::Cell> path,
+                                                        std::size_t lo, std::size_t hi,
+                                                        grid::CornerPolicy policy,
+                                                        MidRounding rounding, InitReject reject,
+                                                        IllegalStep illegal) {
+  require(lo >= 1 && lo <= hi && hi + 2 <= path.size(),
+          "segment mutation needs interior positions 1 <= lo <= hi <= n - 2");
+  const grid::Cell ends[2] = {path[lo - 1], path[hi + 1]};
+  std::vector<grid::Cell> slice;
+  if (connect_chain_into(g, ends, policy, rounding, reject, illegal, slice) != "ok")
+    return std::nullopt;
+  std::vector<grid::Cell> out(path.begin(), path.begin() + static_cast<std::ptrdiff_t>(lo));
+  // slice = ends[0], interior..., ends[1]; a repeated end (Delta = 0) leaves slice = [ends[0]].
+  if (slice.size() >= 2) out.insert(out.end(), slice.begin() + 1, slice.end() - 1);
+  const std::size_t from = slice.size() >= 2 ? hi + 1 : hi + 2;
+  out.insert(out.end(), path.begin() + static_cast<std::ptrdiff_t>(from), path.end());
+  return out;
 }
 
 std::vector<CrossPoint> crossover_points(std::span<const grid::Cell> a,

@@ -10,6 +10,7 @@
 /// Spec: spec/shi2022-ga.md (shi2022.op.init, shi2022.op.crossover, shi2022.op.mutation,
 /// shi2022.op.deletion, shi2022.op.elite)
 #include <cstddef>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -22,15 +23,26 @@ namespace pathref::ga {
 
 /// When an initial chain is rejected (spec shi2022.op.init, option `init_reject`).
 enum class InitReject {
-  blocked,        ///< an inserted cell is blocked, or a continuous step is not an allowed move (default)
+  blocked,        ///< an inserted cell is blocked (the literal "eliminate"; the default before issue 11)
   near_obstacle,  ///< also when an inserted cell has a blocked cell among its 8 neighbours
   shift,          ///< a blocked mid-point is replaced by its first free orthogonal neighbour
                   ///< (x-1, y), (x+1, y), (x, y+1), (x, y-1) other than the pair's cells (the
-                  ///< widely copied MATLAB generate_continuous_path); rejected if none
+                  ///< widely copied MATLAB generate_continuous_path); rejected if none (default)
 };
 /// "blocked" | "near_obstacle" | "shift" -> InitReject; UsageError otherwise. Spec: shi2022.op.init.
 [[nodiscard]] InitReject parse_init_reject(std::string_view name);
 [[nodiscard]] std::string_view to_string(InitReject v) noexcept;
+
+/// What a continuous (Delta = 1) pair whose step is not an allowed move under the corner policy
+/// is (spec shi2022.op.init, option `illegal_step`).
+enum class IllegalStep {
+  repair,  ///< "not continuous" (Sec. 4.2 step 2): the first free orthogonal cell of the diagonal,
+           ///< (b.x, a.y) then (a.x, b.y), is inserted; rejected only when neither is free (default)
+  reject,  ///< the chain is rejected ("illegal_step"), pathref's earlier default
+};
+/// "repair" | "reject" -> IllegalStep; UsageError otherwise. Spec: shi2022.op.init.
+[[nodiscard]] IllegalStep parse_illegal_step(std::string_view name);
+[[nodiscard]] std::string_view to_string(IllegalStep v) noexcept;
 
 /// What connect_chain returns: the repaired path, or the reason the chain was rejected.
 struct ChainRepair {
@@ -41,8 +53,10 @@ struct ChainRepair {
 
 /// Repairs a chain of genes g_0 (start), ..., g_m (goal) into a continuous path (Shi Sec. 4.2,
 /// population initialisation steps 2-3): scanning k = 0, 1, ... left to right, a pair with
-/// Delta = 0 (Eq. 8) drops the second gene; Delta = 1 needs grid::step_allowed (else rejected,
-/// "illegal_step") and advances k; Delta >= 2 inserts insertion_cell (Eq. 9) between them
+/// Delta = 0 (Eq. 8) drops the second gene; Delta = 1 advances k when grid::step_allowed, else
+/// (a diagonal that cuts a corner, or any diagonal under `never`) under IllegalStep::repair the
+/// first free orthogonal cell (b.x, a.y), (a.x, b.y) is inserted without advancing k (rejected,
+/// "illegal_step", when neither is free) and under IllegalStep::reject the chain is rejected; Delta >= 2 inserts insertion_cell (Eq. 9) between them
 /// without advancing k, rejected if the inserted cell is blocked ("blocked_insert") or, under
 /// near_obstacle, has a blocked 8-neighbour inside the map ("near_obstacle"); under shift a
 /// blocked mid-point is replaced by its first free orthogonal neighbour (InitReject::shift) and
@@ -59,7 +73,8 @@ struct ChainRepair {
 [[nodiscard]] ChainRepair connect_chain(const grid::Grid& g, std::span<const grid::Cell> genes,
                                         grid::CornerPolicy policy,
                                         MidRounding rounding = MidRounding::floor,
-                                        InitReject reject = InitReject::blocked);
+                                        InitReject reject = InitReject::shift,
+                                        IllegalStep illegal = IllegalStep::repair);
 
 /// connect_chain writing the repaired path into `path` (overwritten; no allocation once its
 /// capacity suffices) and returning the reason ("ok" when feasible; `path` is then the repaired
@@ -67,7 +82,8 @@ struct ChainRepair {
 /// calls it once per drawn chain. Spec: shi2022.op.init. Pre: as connect_chain.
 [[nodiscard]] std::string_view connect_chain_into(const grid::Grid& g, std::span<const grid::Cell> genes,
                                                   grid::CornerPolicy policy, MidRounding rounding,
-                                                  InitReject reject, std::vector<grid::Cell>& path);
+                                                  InitReject reject, IllegalStep illegal,
+                                                  std::vector<grid::Cell>& path);
 
 /// connect_chain_into that also sets `shifts` to the number of shifted mid-points it made
 /// (InitReject::shift; always 0 otherwise), the count that the W * H bound ("insert_limit")
@@ -75,8 +91,8 @@ struct ChainRepair {
 /// shi2022.plan.ga, "Evaluation"). Spec: shi2022.op.init. Pre: as connect_chain.
 [[nodiscard]] std::string_view connect_chain_into(const grid::Grid& g, std::span<const grid::Cell> genes,
                                                   grid::CornerPolicy policy, MidRounding rounding,
-                                                  InitReject reject, std::vector<grid::Cell>& path,
-                                                  std::int64_t& shifts);
+                                                  InitReject reject, IllegalStep illegal,
+                                                  std::vector<grid::Cell>& path, std::int64_t& shifts);
 
 /// One crossover point: position k in parent a and position j in parent b with a[k] == b[j].
 struct CrossPoint {
@@ -114,6 +130,38 @@ struct Children {
 };
 [[nodiscard]] Children crossover_at(std::span<const grid::Cell> a, std::span<const grid::Cell> b,
                                     CrossPoint point);
+
+/// The common nodes as the classic MATLAB GA script finds them (`ismember` over the whole of b):
+/// for each interior position k = 1..n_a-2 of a, ascending, such that a[k] occurs ANYWHERE in b,
+/// the point (k, j) with j its first position in b (0 <= j <= n_b - 1). Differs from
+/// crossover_points only when a[k] equals b's first or last cell or occurs in b only there.
+/// Source: the classic GA grid script (../shared/data/matlab-maps/README.txt, crossover.m).
+/// Spec: classic.plan.ga
+/// Pre: none. Post: k ascending; a[k] == b[j]; j the smallest such index.
+/// Golden: golden/classic/classic.plan.ga.json (through the planner)
+[[nodiscard]] std::vector<CrossPoint> crossover_points_any(std::span<const grid::Cell> a,
+                                                           std::span<const grid::Cell> b);
+
+/// The classic script's choice of one of n >= 1 items from a draw u in [0, 1):
+/// round(u * (n - 1)) with round half away from zero (MATLAB round; std::round), the product in
+/// binary64. Not uniform: the first and last item have half the probability of the others.
+/// Source: the classic GA grid script (crossover.m, mutation.m: round(rand * (m - 3)) + 2).
+/// Spec: classic.plan.ga
+/// Pre: n >= 1, 0 <= u < 1 (DomainError). Post: in [0, n - 1].
+[[nodiscard]] std::size_t round_choice(double u, std::size_t n);
+
+/// The classic script's segment mutation of path p (0-based interior positions 1 <= lo <= hi <=
+/// n - 2): the genes p[lo..hi] are replaced by the interior of connect_chain([p[lo-1], p[hi+1]])
+/// under the given readings; when p[lo-1] == p[hi+1] the segment and one copy of that cell are
+/// removed. nullopt when the repair rejects the pair.
+/// Source: the classic GA grid script (mutation.m with generate_continuous_path.m).
+/// Spec: classic.plan.ga
+/// Pre: 1 <= lo <= hi <= n - 2, cells inside g (DomainError).
+/// Post: a valid path stays valid (every new step comes from connect_chain); same first and last
+/// cell.
+[[nodiscard]] std::optional<std::vector<grid::Cell>> segment_mutation(
+    const grid::Grid& g, std::span<const grid::Cell> path, std::size_t lo, std::size_t hi,
+    grid::CornerPolicy policy, MidRounding rounding, InitReject reject, IllegalStep illegal);
 
 /// The replacement candidates for gene k of a path (Figure 4, point mutation): the cells c of the
 /// 8-neighbourhood of path[k-1], in increasing cell index (grid.neighbour-order), with c !=

@@ -56,6 +56,14 @@ Planner make_iaco_shi_nomin_planner() {
       &ant_colony::shi_iaco_nomin);
 }
 
+Planner make_aco_classic_planner() {
+  return colony_planner(
+      "aco-classic",
+      "the classic MATLAB ant-colony grid script (eta = 1/d(j, goal), tau0 8, rho 0.3, beta 7, "
+      "100 x 50 ants, deposit both ways; corner policy always by default), spec/classic.md",
+      &ant_colony::classic_aco);
+}
+
 Planner make_iaco_han_planner() {
   return colony_planner(
       "iaco-han",

@@ -21,10 +21,17 @@ namespace pathref::ant_colony {
 Eta parse_eta(std::string_view name) {
   if (name == "inverse_distance") return Eta::inverse_distance;
   if (name == "goal_directed") return Eta::goal_directed;
-  throw UsageError("eta must be inverse_distance or goal_directed, not '" + std::string(name) + "'");
+  if (name == "goal_inverse") return Eta::goal_inverse;
+  throw UsageError("eta must be inverse_distance, goal_directed or goal_inverse, not '" +
+                   std::string(name) + "'");
 }
 std::string_view to_string(Eta v) noexcept {
-  return v == Eta::inverse_distance ? "inverse_distance" : "goal_directed";
+  switch (v) {
+    case Eta::inverse_distance: return "inverse_distance";
+    case Eta::goal_directed: return "goal_directed";
+    case Eta::goal_inverse: return "goal_inverse";
+  }
+  return "?";
 }
 DeadEnd parse_dead_end(std::string_view name) {
   if (name == "die") return DeadEnd::die;
@@ -87,6 +94,7 @@ void validate(const Config& c) {
   require(std::isfinite(c.beta) && c.beta >= 0.0, "ant colony: beta must be finite and >= 0");
   require(std::isfinite(c.Q) && c.Q > 0.0, "ant colony: Q must be finite and > 0");
   require(std::isfinite(c.tau0) && c.tau0 > 0.0, "ant colony: tau0 must be finite and > 0");
+  require(std::isfinite(c.eta_goal) && c.eta_goal > 0.0, "ant colony: eta_goal must be finite and > 0");
   require(c.rho > 0.0 && c.rho < 1.0, "ant colony: rho (rho_initial) must be in (0, 1)");
   if (c.evaporation != Evaporation::constant)
     require(c.rho_min >= 0.0 && c.rho_min < 1.0, "ant colony: rho_min must be in [0, 1)");
@@ -153,6 +161,22 @@ Json number_or_null(double v) { return std::isfinite(v) ? Json(v) : Json(nullptr
 
 Config shi_aco() { return Config{}; }
 
+Config classic_aco() {
+  Config c;  // Ant System: proportional selection, constant rho, ant-cycle deposit, dead ants die
+  c.eta = Eta::goal_inverse;
+  c.eta_goal = 100.0;
+  c.ants = 50;
+  c.iterations = 100;
+  c.alpha = 1.0;
+  c.beta = 7.0;
+  c.Q = 1.0;
+  c.tau0 = 8.0;
+  c.rho = 0.3;
+  c.edge_sense = aco::EdgeSense::undirected;
+  c.dead_end = DeadEnd::die;
+  return c;
+}
+
 Config shi_iaco() {
   Config c;
   c.eta = Eta::goal_directed;
@@ -206,6 +230,7 @@ Json to_params(const Config& c) {
   p["Q"] = c.Q;
   p["tau0"] = c.tau0;
   p["eta"] = std::string(to_string(c.eta));
+  if (c.eta == Eta::goal_inverse) p["eta_goal"] = c.eta_goal;
   p["edge_sense"] = std::string(name_of(c.edge_sense));
   p["dead_end"] = std::string(to_string(c.dead_end));
   switch (c.evaporation) {
@@ -275,6 +300,7 @@ Config from_params(const Config& base, const Json& params) {
     else if (k == "Q") c.Q = num();
     else if (k == "tau0") c.tau0 = num();
     else if (k == "eta") c.eta = parse_eta(str());
+    else if (k == "eta_goal") c.eta_goal = num();
     else if (k == "edge_sense") c.edge_sense = aco::parse_edge_sense(str());
     else if (k == "dead_end") c.dead_end = parse_dead_end(str());
     else if (k == "rho" || k == "rho_initial") c.rho = num();
@@ -421,8 +447,10 @@ Run run(const planners::Request& req, const Config& cfg, rng::Stream& stream) {
           const std::size_t slot = static_cast<std::size_t>(cur) * 8U + static_cast<std::size_t>(arc.dir);
           w_tau.push_back(tau[slot]);
           if (eta_pow[slot] < 0.0) {
-            const double eta = cfg.eta == Eta::inverse_distance ? aco::eta_inverse_distance(cur_cell, to)
-                                                                : aco::eta_goal_directed(cur_cell, to, goal_cell);
+            const double eta =
+                cfg.eta == Eta::inverse_distance ? aco::eta_inverse_distance(cur_cell, to)
+                : cfg.eta == Eta::goal_directed  ? aco::eta_goal_directed(cur_cell, to, goal_cell)
+                                                 : aco::eta_goal_inverse(to, goal_cell, cfg.eta_goal);
             require(std::isfinite(eta) && eta >= 0.0, "eta must be finite and >= 0");
             eta_pow[slot] = std::pow(eta, cfg.beta);
           }

@@ -36,6 +36,7 @@ using Json = planners::Json;
 enum class Eta {
   inverse_distance,  ///< 1 / d_ij (Shi Eq. 3; aco::eta_inverse_distance)
   goal_directed,     ///< 1 / (d_ij + d_jE) (Shi Eq. 12; aco::eta_goal_directed)
+  goal_inverse,      ///< 1 / d_jE, eta_goal at E (classic script; aco::eta_goal_inverse)
 };
 /// How an ant picks its next cell.
 enum class Selection {
@@ -111,6 +112,7 @@ struct Config {
   double Q = 1.0;                 ///< deposit constant of Eq. 7, > 0
   double tau0 = 8.0;              ///< initial pheromone on every edge, > 0
   aco::EdgeSense edge_sense = aco::EdgeSense::directed;
+  double eta_goal = 100.0;  ///< eta at the goal under Eta::goal_inverse (the classic script's 100)
 
   // ---- evaporation ----
   double rho = 0.9;      ///< constant: rho; shi_adaptive: rho_initial; han_stepped: rho(0)
@@ -148,6 +150,11 @@ struct Config {
 /// Defaults of planner `iaco-shi-nomin` (IACO*): shi_iaco() with rho_min = 0.
 /// Spec: shi2022.plan.iaco
 [[nodiscard]] Config shi_iaco_nomin();
+/// Defaults of planner `aco-classic` (spec classic.plan.aco): the classic MATLAB ACO script's
+/// eta = goal_inverse (eta_goal 100), tau0 8, rho 0.3, Q 1, alpha 1, beta 7, 100 iterations of 50
+/// ants, edge_sense undirected, dead_end die, evaporation constant, deposit ant_cycle.
+/// Spec: classic.plan.aco
+[[nodiscard]] Config classic_aco();
 /// Defaults of planner `iaco-han` (spec han.plan.iaco): 50 ants, 50 cycles, alpha 4, beta 8,
 /// rho(0) 0.7, eta goal_directed, dead_end backtrack (the readings of han.plan.iaco),
 /// selection pseudo_random, corner han, evaporation han_stepped, deposit han_elite,
@@ -212,6 +219,9 @@ namespace pathref::planners {
 [[nodiscard]] Planner make_iaco_shi_planner();
 /// Planner "iaco-shi-nomin": IACO* (no rho_min). Spec: shi2022.plan.iaco
 [[nodiscard]] Planner make_iaco_shi_nomin_planner();
+/// Planner "aco-classic": the classic MATLAB ACO grid script's defaults, default corner policy
+/// always. Spec: classic.plan.aco
+[[nodiscard]] Planner make_aco_classic_planner();
 /// Planner "iaco-han": Han (IJACSA) Eq. 1-7. Spec: han.plan.iaco
 [[nodiscard]] Planner make_iaco_han_planner();
 /// Planner "astar-han": 8-direction A* (search::astar) with the Chebyshev heuristic of Han

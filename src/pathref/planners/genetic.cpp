@@ -26,6 +26,7 @@ std::string_view name_of(ga::SmoothnessReading v) {
     case ga::SmoothnessReading::per_turn: return "per_turn";
     case ga::SmoothnessReading::angle_times_penalty: return "angle_times_penalty";
     case ga::SmoothnessReading::inverse_total: return "inverse_total";
+    case ga::SmoothnessReading::inverse_total_plus_one: return "inverse_total_plus_one";
   }
   return "?";
 }
@@ -118,7 +119,60 @@ std::string_view to_string(Origin v) noexcept {
   return "?";
 }
 
+InitRetry parse_init_retry(std::string_view n) {
+  if (n == "per_individual") return InitRetry::per_individual;
+  if (n == "none") return InitRetry::none;
+  unknown("init_retry", n, "per_individual or none");
+}
+std::string_view to_string(InitRetry v) noexcept {
+  return v == InitRetry::per_individual ? "per_individual" : "none";
+}
+Selection parse_selection(std::string_view n) {
+  if (n == "independent") return Selection::independent;
+  if (n == "sorted") return Selection::sorted;
+  unknown("selection", n, "independent or sorted");
+}
+std::string_view to_string(Selection v) noexcept {
+  return v == Selection::independent ? "independent" : "sorted";
+}
+CrossoverPoints parse_crossover_points(std::string_view n) {
+  if (n == "interior") return CrossoverPoints::interior;
+  if (n == "script") return CrossoverPoints::script;
+  unknown("crossover_points", n, "interior or script");
+}
+std::string_view to_string(CrossoverPoints v) noexcept {
+  return v == CrossoverPoints::interior ? "interior" : "script";
+}
+Mutation parse_mutation(std::string_view n) {
+  if (n == "point") return Mutation::point;
+  if (n == "segment") return Mutation::segment;
+  unknown("mutation", n, "point or segment");
+}
+std::string_view to_string(Mutation v) noexcept { return v == Mutation::point ? "point" : "segment"; }
+
 Config shi_ga() { return Config{}; }
+
+Config classic_ga() {
+  Config c;
+  c.population = 200;
+  c.generations = 50;
+  c.pc = 0.8;
+  c.pm = 0.2;
+  c.fitness = Fitness::weighted;
+  c.weights = ga::FitnessWeights{1.0, 1.0, 0.0};
+  c.smoothness = ga::SmoothnessReading::inverse_total;
+  c.penalties = ga::TurnPenalties{3.0, 15.0, 20.0};
+  c.probabilities = Probabilities::fixed;
+  c.init_reject = ga::InitReject::shift;
+  c.init_retry = InitRetry::none;
+  c.selection = Selection::sorted;
+  c.crossover_points = CrossoverPoints::script;
+  c.mutation = Mutation::segment;
+  c.crossover_keep = CrossoverKeep::children;
+  c.loops = Loops::keep;
+  c.result_by = ResultBy::fitness;
+  return c;
+}
 
 Config shi_iga() {
   Config c;
@@ -159,9 +213,15 @@ Json to_params(const Config& c) {
       {"mid_rounding", std::string(name_of(c.mid_rounding))},
       {"init_reject", std::string(ga::to_string(c.init_reject))},
       {"init_attempts", c.init_attempts},
+      {"illegal_step", std::string(ga::to_string(c.illegal_step))},
       {"crossover_keep", std::string(to_string(c.crossover_keep))},
       {"loops", std::string(to_string(c.loops))},
       {"result_by", std::string(to_string(c.result_by))},
+      {"init_retry", std::string(to_string(c.init_retry))},
+      {"selection", std::string(to_string(c.selection))},
+      {"crossover_points", std::string(to_string(c.crossover_points))},
+      {"mutation", std::string(to_string(c.mutation))},
+      {"mutation_attempts", c.mutation_attempts},
   };
 }
 
@@ -183,6 +243,8 @@ void validate(const Config& c) {
   require(c.init_attempts >= 1 && c.init_attempts <= 100000000, "init_attempts must lie in [1, 10^8]");
   require(std::isfinite(c.elite_fraction) && c.elite_fraction > 0.0 && c.elite_fraction <= 1.0,
           "elite_fraction must lie in (0, 1]");
+  require(c.mutation_attempts >= 1 && c.mutation_attempts <= 100000000,
+          "mutation_attempts must lie in [1, 10^8]");
 }
 
 Config from_params(const Config& base, const Json& p) {
@@ -225,10 +287,16 @@ Config from_params(const Config& base, const Json& p) {
   if (p.contains("mid_rounding")) c.mid_rounding = ga::parse_mid_rounding(str("mid_rounding"));
   if (p.contains("init_reject")) c.init_reject = ga::parse_init_reject(str("init_reject"));
   if (p.contains("init_attempts")) c.init_attempts = integer("init_attempts");
+  if (p.contains("illegal_step")) c.illegal_step = ga::parse_illegal_step(str("illegal_step"));
   if (p.contains("crossover_keep")) c.crossover_keep = parse_crossover_keep(str("crossover_keep"));
   if (p.contains("loops")) c.loops = parse_loops(str("loops"));
   if (p.contains("result_by")) c.result_by = parse_result_by(str("result_by"));
   if (p.contains("elite_fraction")) c.elite_fraction = num("elite_fraction");
+  if (p.contains("init_retry")) c.init_retry = parse_init_retry(str("init_retry"));
+  if (p.contains("selection")) c.selection = parse_selection(str("selection"));
+  if (p.contains("crossover_points")) c.crossover_points = parse_crossover_points(str("crossover_points"));
+  if (p.contains("mutation")) c.mutation = parse_mutation(str("mutation"));
+  if (p.contains("mutation_attempts")) c.mutation_attempts = integer("mutation_attempts");
   validate(c);
   return c;
 }
@@ -293,7 +361,7 @@ class PairVerdicts {
       const grid::Cell pair[2] = {levels_[l][i], levels_[l + 1][j]};
       std::int64_t shifts = 0;
       const bool ok = ga::connect_chain_into(g, pair, policy, c.mid_rounding, c.init_reject,
-                                             scratch_, shifts) == "ok";
+                                             c.illegal_step, scratch_, shifts) == "ok";
       // ok implies shifts <= W * H <= 2^28 (else "insert_limit"), so it fits.
       v = ok ? static_cast<std::int32_t>(shifts) : rejected;
     }
@@ -339,7 +407,8 @@ InitOutcome initial_paths(const grid::Grid& g, grid::Cell start, grid::Cell goal
   std::vector<grid::Cell> chain;  // connect_chain_into's buffer, reused by every chain
   for (std::int64_t a = 0; a < count; ++a) {
     bool done = false;
-    for (std::int64_t attempt = 0; attempt < c.init_attempts && !done; ++attempt) {
+    const std::int64_t attempts = c.init_retry == InitRetry::none ? 1 : c.init_attempts;
+    for (std::int64_t attempt = 0; attempt < attempts && !done; ++attempt) {
       for (std::size_t l = 1; l + 1 < L; ++l)
         pick[l] = rng::uniform_index(stream.next_double(), levels[l].size());
       ++out.chains;
@@ -358,7 +427,8 @@ InitOutcome initial_paths(const grid::Grid& g, grid::Cell start, grid::Cell goal
       if (!feasible) continue;
       for (std::size_t l = 0; l < L; ++l) genes[l] = levels[l][pick[l]];
       const std::string_view reason =
-          ga::connect_chain_into(g, genes, policy, c.mid_rounding, c.init_reject, chain);
+          ga::connect_chain_into(g, genes, policy, c.mid_rounding, c.init_reject, c.illegal_step,
+                                 chain);
       if (reason == "ok") {
         out.paths.push_back(chain);
         done = true;
@@ -367,13 +437,27 @@ InitOutcome initial_paths(const grid::Grid& g, grid::Cell start, grid::Cell goal
                                "connect_chain rejects (" + std::string(reason) + ")");
       }
     }
-    if (!done) {
+    if (!done && c.init_retry == InitRetry::per_individual) {
       out.failure = "init_attempts_exhausted";
       return out;
     }
   }
+  if (out.paths.empty()) {  // init_retry = none and every chain rejected
+    out.failure = "init_all_rejected";
+    return out;
+  }
   out.ok = true;
   return out;
+}
+
+Json population_extra(std::int64_t size, std::int64_t from_init, std::int64_t from_aco,
+                      const InitOutcome& init) {
+  return Json{{"population_size", size},
+              {"population_init", from_init},
+              {"population_aco", from_aco},
+              {"init_built", static_cast<std::int64_t>(init.paths.size())},
+              {"init_exhausted", init.failure == "init_attempts_exhausted"},
+              {"init_chains", init.chains}};
 }
 
 Evolution evolve(const grid::Grid& g, grid::CornerPolicy policy, const Config& c,
@@ -400,13 +484,25 @@ Evolution evolve(const grid::Grid& g, grid::CornerPolicy policy, const Config& c
     // Step 2: roulette selection (Eq. 11), S draws.
     for (std::size_t s = 0; s < S; ++s) fit[s] = pop[s].fitness;
     pool.clear();
-    for (std::size_t s = 0; s < S; ++s) pool.push_back(pop[rng::roulette(fit, stream.next_double())]);
+    if (c.selection == Selection::independent) {
+      for (std::size_t s = 0; s < S; ++s) pool.push_back(pop[rng::roulette(fit, stream.next_double())]);
+    } else {  // sorted: S draws, ascending, then the roulette of each (the classic script)
+      std::vector<double> us(S);
+      for (double& u : us) u = stream.next_double();
+      std::sort(us.begin(), us.end());
+      for (const double u : us) pool.push_back(pop[rng::roulette(fit, u)]);
+    }
     // Step 3: crossover of the pairs (2p, 2p + 1).
     for (std::size_t p = 0; p + 1 < S; p += 2) {
       if (!rng::bernoulli(stream.next_double(), pc)) continue;
-      const std::vector<ga::CrossPoint> pts = ga::crossover_points(pool[p].path, pool[p + 1].path);
+      const bool script = c.crossover_points == CrossoverPoints::script;
+      const std::vector<ga::CrossPoint> pts =
+          script ? ga::crossover_points_any(pool[p].path, pool[p + 1].path)
+                 : ga::crossover_points(pool[p].path, pool[p + 1].path);
       if (pts.empty()) continue;
-      const ga::CrossPoint pt = pts[rng::uniform_index(stream.next_double(), pts.size())];
+      const double u = stream.next_double();
+      const ga::CrossPoint pt = pts[script ? ga::round_choice(u, pts.size())
+                                           : rng::uniform_index(u, pts.size())];
       ga::Children ch = ga::crossover_at(pool[p].path, pool[p + 1].path, pt);
       if (c.loops == Loops::cut) {
         ch.first = ga::remove_loops(ch.first);
@@ -443,6 +539,21 @@ Evolution evolve(const grid::Grid& g, grid::CornerPolicy policy, const Config& c
       if (!rng::bernoulli(stream.next_double(), pm)) continue;
       const std::size_t n = pool[a].path.size();
       if (n < 3) continue;
+      if (c.mutation == Mutation::segment) {
+        // The classic script: two positions round(u (n - 3)) + 1, sorted; the genes between
+        // are replaced by the repair of their outer neighbours; redrawn while it rejects.
+        for (std::int64_t t = 0; t < c.mutation_attempts; ++t) {
+          const std::size_t k1 = 1 + ga::round_choice(stream.next_double(), n - 2);
+          const std::size_t k2 = 1 + ga::round_choice(stream.next_double(), n - 2);
+          auto mutated = ga::segment_mutation(g, pool[a].path, std::min(k1, k2), std::max(k1, k2),
+                                              policy, c.mid_rounding, c.init_reject, c.illegal_step);
+          if (!mutated) continue;
+          if (c.loops == Loops::cut) *mutated = ga::remove_loops(*mutated);
+          pool[a] = make_individual(g, std::move(*mutated), c, Origin::mutation, i);
+          break;
+        }
+        continue;
+      }
       const std::size_t k = 1 + rng::uniform_index(stream.next_double(), n - 2);
       const std::vector<grid::Cell> cand = ga::mutation_candidates(g, pool[a].path, k, policy);
       if (cand.empty()) continue;
@@ -484,9 +595,9 @@ planners::Result run(const planners::Request& req, const Config& c, rng::Stream&
   }
   const InitOutcome init = initial_paths(g, req.start, req.goal, req.policy, c, stream, c.population);
   if (!init.ok) {
-    r.extra = Json{{"failure", init.failure},
-                   {"draws", stream.doubles_drawn()},
-                   {"init_chains", init.chains}};
+    r.extra = population_extra(0, 0, 0, init);
+    r.extra["failure"] = init.failure;
+    r.extra["draws"] = stream.doubles_drawn();
     return r;
   }
   std::vector<Individual> pop;
@@ -499,11 +610,12 @@ planners::Result run(const planners::Request& req, const Config& c, rng::Stream&
   r.iterations = c.generations;
   r.best_per_iteration = std::move(ev.best_per_generation);
   r.mean_per_iteration = std::move(ev.mean_per_generation);
-  r.extra = Json{{"best_generation", ev.best_generation},
-                 {"best_origin", std::string(to_string(ev.best.origin))},
-                 {"best_fitness", ev.best.fitness},
-                 {"draws", stream.doubles_drawn()},
-                 {"init_chains", init.chains}};
+  const auto built = static_cast<std::int64_t>(init.paths.size());
+  r.extra = population_extra(built, built, 0, init);
+  r.extra["best_generation"] = ev.best_generation;
+  r.extra["best_origin"] = std::string(to_string(ev.best.origin));
+  r.extra["best_fitness"] = ev.best.fitness;
+  r.extra["draws"] = stream.doubles_drawn();
   return r;
 }
 
@@ -541,6 +653,14 @@ Planner make_iga_shi_planner() {
               "improved GA (Shi et al. 2022 Sec. 4.4.2: Eq. 14-20 fitness, adaptive Pc/Pm), "
               "spec/shi2022-ga.md",
               genetic::shi_iga());
+}
+
+Planner make_ga_classic_planner() {
+  return make("ga-classic",
+              "the classic MATLAB GA grid script (one free cell per row, its continuity repair, "
+              "fitness 1/length + 1/smoothness, segment mutation; NP 200, 50 generations, pc 0.8, "
+              "pm 0.2; corner policy always by default), spec/classic.md",
+              genetic::classic_ga());
 }
 
 Planner make_iga_shi_nomax_planner() {

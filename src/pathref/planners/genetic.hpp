@@ -55,6 +55,30 @@ enum class ResultBy {
   fitness,  ///< the largest fitness ever evaluated (earliest on ties)
   length,   ///< the shortest path ever evaluated (earliest on ties)
 };
+/// Option `init_retry` (spec shi2022.plan.ga step 2, classic.plan.ga).
+enum class InitRetry {
+  per_individual,  ///< Shi: draw chains until one repairs, up to init_attempts per individual
+  none,            ///< the classic script: one chain per individual; rejected chains are dropped
+                   ///< and the population is the survivors
+};
+/// Option `selection` (step 5.2).
+enum class Selection {
+  independent,  ///< N roulette draws, pool slot s from the s-th draw (Eq. 11)
+  sorted,       ///< the classic script: N draws sorted ascending, then the roulette of each
+};
+/// Option `crossover_points` (step 5.3).
+enum class CrossoverPoints {
+  interior,  ///< shi2022.op.crossover's points, choice rng.index (Figure 3)
+  script,    ///< the classic script: interior k of a whose cell is anywhere in b, j its first
+             ///< position in b; choice round(u * (P - 1)) (classic.plan.ga)
+};
+/// Option `mutation` (step 5.5).
+enum class Mutation {
+  point,    ///< Shi Figure 4: one gene replaced by a candidate (shi2022.op.mutation)
+  segment,  ///< the classic script: the genes between two random positions are replaced by the
+            ///< chain repair of their outer neighbours, redrawn until it repairs
+};
+
 /// Where an individual was made (reported as `best_origin`).
 enum class Origin { init, aco, crossover, mutation };
 
@@ -71,6 +95,14 @@ enum class Origin { init, aco, crossover, mutation };
 [[nodiscard]] ResultBy parse_result_by(std::string_view name);
 [[nodiscard]] std::string_view to_string(ResultBy v) noexcept;
 [[nodiscard]] std::string_view to_string(Origin v) noexcept;
+[[nodiscard]] InitRetry parse_init_retry(std::string_view name);
+[[nodiscard]] std::string_view to_string(InitRetry v) noexcept;
+[[nodiscard]] Selection parse_selection(std::string_view name);
+[[nodiscard]] std::string_view to_string(Selection v) noexcept;
+[[nodiscard]] CrossoverPoints parse_crossover_points(std::string_view name);
+[[nodiscard]] std::string_view to_string(CrossoverPoints v) noexcept;
+[[nodiscard]] Mutation parse_mutation(std::string_view name);
+[[nodiscard]] std::string_view to_string(Mutation v) noexcept;
 
 /// Every setting of one GA run. Defaults: the single GA with Table 1 values (planner `ga`).
 struct Config {
@@ -78,7 +110,7 @@ struct Config {
   std::int64_t generations = 50;  ///< M_g (Table 1), >= 1
   Fitness fitness = Fitness::inverse_length;
   ga::FitnessWeights weights{};  ///< a, b, c (Table 1: 5, 4, 1)
-  ga::SmoothnessReading smoothness = ga::SmoothnessReading::per_node;
+  ga::SmoothnessReading smoothness = ga::SmoothnessReading::inverse_total_plus_one;
   ga::TurnPenalties penalties{};  ///< 5, 100, 1000
   ga::SafetyOptions safety{};
   Probabilities probabilities = Probabilities::fixed;
@@ -90,8 +122,9 @@ struct Config {
   ga::PmAtZero pm_at_zero = ga::PmAtZero::binary64;
   int ga_i_origin = 1;  ///< generation numbering of Eq. 19-20: 1 or 0
   ga::MidRounding mid_rounding = ga::MidRounding::floor;
-  ga::InitReject init_reject = ga::InitReject::blocked;
+  ga::InitReject init_reject = ga::InitReject::shift;  ///< blocked before issue 11
   std::int64_t init_attempts = 100000;  ///< chains drawn per individual before giving up, >= 1
+  ga::IllegalStep illegal_step = ga::IllegalStep::repair;  ///< a corner-cutting continuous pair
   CrossoverKeep crossover_keep = CrossoverKeep::children;
   Loops loops = Loops::keep;
   ResultBy result_by = ResultBy::fitness;
@@ -99,6 +132,12 @@ struct Config {
   /// parents ++ children. false for the single and improved GA.
   bool elitist = false;
   double elite_fraction = 0.5;
+  // ---- the classic-MATLAB profile (spec/classic.md, classic.plan.ga); Shi's by default ----
+  InitRetry init_retry = InitRetry::per_individual;
+  Selection selection = Selection::independent;
+  CrossoverPoints crossover_points = CrossoverPoints::interior;
+  Mutation mutation = Mutation::point;
+  std::int64_t mutation_attempts = 100000;  ///< segment mutation: position pairs tried, >= 1
 };
 
 /// Defaults of planner `ga` (spec shi2022.plan.ga): the Config defaults.
@@ -107,6 +146,12 @@ struct Config {
 [[nodiscard]] Config shi_iga();
 /// Defaults of planner `iga-shi-nomax` (IGA*): shi_iga() with pm_max = 1 (Eq. 20 never caps).
 [[nodiscard]] Config shi_iga_nomax();
+/// Defaults of planner `ga-classic` (spec classic.plan.ga): the classic MATLAB GA script's
+/// N = 200, 50 generations, pc 0.8, pm 0.2, fitness 1/length + 1/(total turn penalty)
+/// (weighted, a = b = 1, c = 0, smoothness inverse_total, penalties 3/15/20), init_reject shift,
+/// init_retry none, selection sorted, crossover_points script, mutation segment.
+/// Spec: classic.plan.ga
+[[nodiscard]] Config classic_ga();
 
 /// The planner parameters of a config (names of spec/shi2022-ga.md "Parameters"); every setting
 /// is listed. `elitist` is not a parameter (it is fixed by the planner).
@@ -161,6 +206,15 @@ inline constexpr std::int64_t init_verdict_max_entries = std::int64_t{1} << 20;
                                         grid::CornerPolicy policy, const Config& c,
                                         rng::Stream& stream, std::int64_t count);
 
+/// The population disclosure every GA-based planner puts in Result::extra (spec shi2022.plan.ga
+/// step 6, "Population"): `population_size` (individuals the generations evolve),
+/// `population_init` (of them, paths of the Sec. 4.2 initialisation), `population_aco` (of them,
+/// ant paths, repeats counted), `init_built` (chains the initialisation repaired into paths),
+/// `init_exhausted` (it gave up: init_attempts chains of one individual rejected), `init_chains`
+/// (chains drawn). Spec: shi2022.plan.ga, shi2022.plan.hybrid, shi2022.plan.iha.
+[[nodiscard]] Json population_extra(std::int64_t size, std::int64_t from_init, std::int64_t from_aco,
+                                    const InitOutcome& init);
+
 /// What evolve returns.
 struct Evolution {
   Individual best;                          ///< best by result_by over generations 0..M_g
@@ -195,5 +249,8 @@ namespace pathref::planners {
 [[nodiscard]] Planner make_iga_shi_planner();
 /// Planner "iga-shi-nomax": IGA* (no P_m_max cap). Spec: shi2022.plan.iga
 [[nodiscard]] Planner make_iga_shi_nomax_planner();
+/// Planner "ga-classic": the classic MATLAB GA grid script's defaults, default corner policy
+/// always. Spec: classic.plan.ga
+[[nodiscard]] Planner make_ga_classic_planner();
 
 }  // namespace pathref::planners

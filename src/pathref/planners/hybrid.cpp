@@ -69,7 +69,7 @@ void require_endpoints(const grid::Grid& g, const planners::Request& req) {
 
 /// The result of the GA phase, with the colony's curves in front.
 planners::Result finish(const ant_colony::Run& colony, const genetic::Evolution& ev,
-                        const genetic::Config& ga, std::int64_t init_chains, Json params,
+                        const genetic::Config& ga, Json population, Json params,
                         rng::Stream& stream) {
   planners::Result r;
   r.found = true;
@@ -83,14 +83,14 @@ planners::Result finish(const ant_colony::Run& colony, const genetic::Evolution&
   r.mean_per_iteration.insert(r.mean_per_iteration.end(), ev.mean_per_generation.begin(),
                               ev.mean_per_generation.end());
   r.params_used = std::move(params);
-  r.extra = Json{{"phase", ev.best.origin == genetic::Origin::aco ? "aco" : "ga"},
-                 {"best_origin", std::string(genetic::to_string(ev.best.origin))},
-                 {"best_generation", ev.best_generation},
-                 {"best_fitness", ev.best.fitness},
-                 {"phase_iterations", Json{{"aco", colony.result.iterations}, {"ga", ga.generations}}},
-                 {"aco", aco_summary(colony)},
-                 {"init_chains", init_chains},
-                 {"draws", stream.doubles_drawn()}};
+  r.extra = std::move(population);
+  r.extra["phase"] = ev.best.origin == genetic::Origin::aco ? "aco" : "ga";
+  r.extra["best_origin"] = std::string(genetic::to_string(ev.best.origin));
+  r.extra["best_generation"] = ev.best_generation;
+  r.extra["best_fitness"] = ev.best.fitness;
+  r.extra["phase_iterations"] = Json{{"aco", colony.result.iterations}, {"ga", ga.generations}};
+  r.extra["aco"] = aco_summary(colony);
+  r.extra["draws"] = stream.doubles_drawn();
   return r;
 }
 
@@ -103,17 +103,17 @@ planners::Result trivial(const planners::Request& req, Json params) {
   return r;
 }
 
-planners::Result not_found(const ant_colony::Run& colony, const std::string& failure,
-                           std::int64_t init_chains, Json params, rng::Stream& stream) {
+planners::Result not_found(const ant_colony::Run& colony, const genetic::InitOutcome& init,
+                           Json params, rng::Stream& stream) {
   planners::Result r;
   r.iterations = colony.result.iterations;
   r.best_per_iteration = colony.result.best_per_iteration;
   r.mean_per_iteration = colony.result.mean_per_iteration;
   r.params_used = std::move(params);
-  r.extra = Json{{"failure", failure},
-                 {"aco", aco_summary(colony)},
-                 {"init_chains", init_chains},
-                 {"draws", stream.doubles_drawn()}};
+  r.extra = genetic::population_extra(0, 0, 0, init);
+  r.extra["failure"] = init.failure;
+  r.extra["aco"] = aco_summary(colony);
+  r.extra["draws"] = stream.doubles_drawn();
   return r;
 }
 
@@ -198,23 +198,25 @@ planners::Result run_traditional(const planners::Request& req, const Traditional
   pop.reserve(N);
   for (std::size_t k = 0; k < sorted.size() && pop.size() < N; ++k)
     pop.push_back(genetic::make_individual(g, sorted[k]->path, c.ga, genetic::Origin::aco, 0));
-  std::int64_t chains = 0;
+  genetic::InitOutcome init;
+  std::int64_t from_init = 0;
   if (pop.size() < N && (c.fill == Fill::random || sorted.empty())) {
     const auto missing = static_cast<std::int64_t>(N - pop.size());
-    genetic::InitOutcome init =
-        genetic::initial_paths(g, req.start, req.goal, req.policy, c.ga, stream, missing);
-    chains = init.chains;
+    init = genetic::initial_paths(g, req.start, req.goal, req.policy, c.ga, stream, missing);
     if (init.ok) {
-      for (auto& p : init.paths)
-        pop.push_back(genetic::make_individual(g, std::move(p), c.ga, genetic::Origin::init, 0));
+      for (const auto& p : init.paths)
+        pop.push_back(genetic::make_individual(g, p, c.ga, genetic::Origin::init, 0));
+      from_init = static_cast<std::int64_t>(init.paths.size());
     } else if (sorted.empty()) {
-      return not_found(colony, init.failure, chains, std::move(params), stream);
+      return not_found(colony, init, std::move(params), stream);
     }
   }
   for (std::size_t k = 0; pop.size() < N; ++k)  // fill = repeat (or random init gave up)
     pop.push_back(pop[k % sorted.size()]);
+  const auto size = static_cast<std::int64_t>(pop.size());
+  Json population = genetic::population_extra(size, from_init, size - from_init, init);
   const genetic::Evolution ev = genetic::evolve(g, req.policy, c.ga, stream, std::move(pop));
-  return finish(colony, ev, c.ga, chains, std::move(params), stream);
+  return finish(colony, ev, c.ga, std::move(population), std::move(params), stream);
 }
 
 planners::Result run_improved(const planners::Request& req, const ImprovedConfig& c,
@@ -238,7 +240,7 @@ planners::Result run_improved(const planners::Request& req, const ImprovedConfig
       initial.push_back(genetic::make_individual(g, ga::delete_redundant(g, p, req.policy), c.ga,
                                                  genetic::Origin::init, 0));
   } else if (K == 0) {
-    return not_found(colony, init.failure, init.chains, std::move(params), stream);
+    return not_found(colony, init, std::move(params), stream);
   }
   // Step 5: the top elite_fraction of the initial population, then the injected ant paths.
   std::vector<double> fit(initial.size());
@@ -251,9 +253,12 @@ planners::Result run_improved(const planners::Request& req, const ImprovedConfig
     if (c.deletion_scope == DeletionScope::merged) p = ga::delete_redundant(g, p, req.policy);
     pop.push_back(genetic::make_individual(g, std::move(p), c.ga, genetic::Origin::aco, 0));
   }
+  const auto size = static_cast<std::int64_t>(pop.size());
+  const auto from_aco = static_cast<std::int64_t>(K);
+  Json population = genetic::population_extra(size, size - from_aco, from_aco, init);
   // Steps 6-9: the elitist generation loop.
   const genetic::Evolution ev = genetic::evolve(g, req.policy, c.ga, stream, std::move(pop));
-  return finish(colony, ev, c.ga, init.chains, std::move(params), stream);
+  return finish(colony, ev, c.ga, std::move(population), std::move(params), stream);
 }
 
 }  // namespace pathref::hybrid

@@ -14,6 +14,7 @@ std::vector<Planner> all_planners() {
   v.push_back(make_dijkstra_planner());
   // ant-colony planners (spec/shi2022-aco.md, spec/han-iaco.md): added by the ACO module
   v.push_back(make_aco_planner());
+  v.push_back(make_aco_classic_planner());
   v.push_back(make_iaco_shi_planner());
   v.push_back(make_iaco_shi_nomin_planner());
   v.push_back(make_iaco_han_planner());
@@ -24,6 +25,7 @@ std::vector<Planner> all_planners() {
   v.push_back(make_iga_shi_nomax_planner());
   v.push_back(make_hybrid_ga_aco_planner());
   v.push_back(make_iha_planner());
+  v.push_back(make_ga_classic_planner());
   // IACO-A* (spec/han-sim.md): added by the simulation module
   // (its parameters are those of the planners above, as <planner>.<name>)
   v.push_back(make_iaco_astar_planner(v));

@@ -7,6 +7,7 @@
 
 #include "pathref/core/error.hpp"
 #include "pathref/grid/json_codec.hpp"
+#include "pathref/planners/default_policy.hpp"
 #include "pathref/planners/planner.hpp"
 #include "pathref/rules/modules.hpp"
 
@@ -39,7 +40,7 @@ planners::Result run_planner(const std::string& algo, const Json& in, const grid
   req.start = grid::cell_from_json(arg(in, "start"));
   req.goal = grid::cell_from_json(arg(in, "goal"));
   req.policy = (in.contains("policy")) ? grid::policy_from_json(in.at("policy"))
-                                       : grid::CornerPolicy::strict;
+                                       : planners::default_policy(algo);
   if (in.contains("seed")) {
     const long long s = arg_integer(in, "seed");
     require(s >= 0 && s <= 0xFFFFFFFFLL, "seed must be in [0, 2^32)");
@@ -112,6 +113,17 @@ void register_aco_planner_rules(Registry& r) {
              [](const Json& in) {
                const grid::Grid g = grid::grid_from_json(arg(in, "grid"));
                return colony_json(run_planner("aco", in, g));
+             }});
+  std::vector<Field> classic_inputs = colony_inputs;
+  classic_inputs[4] = {"policy", "string", "corner policy never|strict|one|always (default always)"};
+  r.add(Rule{"classic.plan.aco",
+             "Planner aco-classic: the classic MATLAB ACO grid script's defaults, whole run",
+             "pathref::ant_colony::run",
+             classic_inputs,
+             colony_outputs,
+             [](const Json& in) {
+               const grid::Grid g = grid::grid_from_json(arg(in, "grid"));
+               return colony_json(run_planner("aco-classic", in, g));
              }});
   std::vector<Field> iaco_inputs = colony_inputs;
   iaco_inputs.push_back({"algo", "string", "iaco-shi (default) | iaco-shi-nomin (IACO*)"});

@@ -11,6 +11,7 @@
 #include "pathref/equations/ga_operators.hpp"
 #include "pathref/equations/metrics.hpp"
 #include "pathref/grid/json_codec.hpp"
+#include "pathref/planners/default_policy.hpp"
 #include "pathref/planners/planner.hpp"
 #include "pathref/rules/modules.hpp"
 
@@ -65,7 +66,14 @@ const std::vector<Field> plan_outputs = {
     {"best_generation", "integer", "GA generation that first held the best (0 = initial)"},
     {"best_origin", "string", "init | aco | crossover | mutation"},
     {"phase", "string", "hybrids: aco | ga, the phase that produced the best"},
-    {"draws", "integer", "doubles drawn from the stream"}};
+    {"draws", "integer", "doubles drawn from the stream"},
+    {"failure", "string", "when not found: row_blocked | init_attempts_exhausted | init_all_rejected"},
+    {"init_chains", "integer", "chains drawn by the initialisation"},
+    {"population_size", "integer", "individuals the generations evolved"},
+    {"population_init", "integer", "of them, initialisation paths"},
+    {"population_aco", "integer", "of them, ant paths"},
+    {"init_built", "integer", "chains repaired into paths"},
+    {"init_exhausted", "bool", "the initialisation gave up"}};
 
 Json run_planner(const Json& in, const char* default_algo, const std::set<std::string>& algos) {
   const std::string algo = opt_string(in, "algo", default_algo);
@@ -77,7 +85,8 @@ Json run_planner(const Json& in, const char* default_algo, const std::set<std::s
   req.grid = &g;
   req.start = grid::cell_from_json(arg(in, "start"));
   req.goal = grid::cell_from_json(arg(in, "goal"));
-  req.policy = policy_of(in);
+  req.policy = (in.is_object() && in.contains("policy")) ? grid::policy_from_json(in.at("policy"))
+                                                         : planners::default_policy(algo);
   const long long seed = arg_integer(in, "seed");
   require(seed >= 0 && seed <= 4294967295LL, "seed must lie in [0, 2^32)");
   req.seed = static_cast<std::uint32_t>(seed);
@@ -93,7 +102,9 @@ Json run_planner(const Json& in, const char* default_algo, const std::set<std::s
            {"iterations", r.iterations},
            {"best_per_iteration", numbers(r.best_per_iteration)},
            {"mean_per_iteration", numbers(r.mean_per_iteration)}};
-  for (const char* k : {"best_generation", "best_origin", "phase", "draws", "failure", "init_chains"})
+  for (const char* k : {"best_generation", "best_origin", "phase", "draws", "failure", "init_chains",
+                        "population_size", "population_init", "population_aco", "init_built",
+                        "init_exhausted"})
     if (r.extra.contains(k)) out[k] = r.extra.at(k);
   return out;
 }
@@ -109,7 +120,8 @@ void register_ga_planner_rules(Registry& r) {
        {"genes", "path", "start, one gene per row, goal (>= 2 cells, all inside the grid)"},
        {"policy", "string", "corner policy (default strict)"},
        {"mid_rounding", "string", "floor (default) | ceil | half_even"},
-       {"init_reject", "string", "blocked (default) | near_obstacle"}},
+       {"init_reject", "string", "shift (default) | blocked | near_obstacle"},
+       {"illegal_step", "string", "repair (default) | reject: a corner-cutting continuous pair"}},
       {{"feasible", "bool", "the chain became a valid path"},
        {"path", "path", "the repaired path ([] when rejected)"},
        {"reason", "string", "ok | blocked_gene | blocked_insert | near_obstacle | illegal_step"}},
@@ -117,8 +129,9 @@ void register_ga_planner_rules(Registry& r) {
         const grid::Grid g = grid::grid_from_json(arg(in, "grid"));
         const auto genes = path_of(in, "genes");
         const auto rounding = ga::parse_mid_rounding(opt_string(in, "mid_rounding", "floor"));
-        const auto rej = ga::parse_init_reject(opt_string(in, "init_reject", "blocked"));
-        const ga::ChainRepair c = ga::connect_chain(g, genes, policy_of(in), rounding, rej);
+        const auto rej = ga::parse_init_reject(opt_string(in, "init_reject", "shift"));
+        const auto ill = ga::parse_illegal_step(opt_string(in, "illegal_step", "repair"));
+        const ga::ChainRepair c = ga::connect_chain(g, genes, policy_of(in), rounding, rej, ill);
         return Json{{"feasible", c.feasible}, {"path", grid::path_to_json(c.path)},
                     {"reason", c.reason}};
       }});
@@ -236,6 +249,12 @@ void register_ga_planner_rules(Registry& r) {
              "Planner iha: the improved GA-ACO hybrid of Shi Sec. 4.4.3 (whole run)",
              "pathref::hybrid::run_improved", plan_inputs, plan_outputs,
              [](const Json& in) { return run_planner(in, "iha", {"iha"}); }});
+  std::vector<Field> classic_inputs = plan_inputs;
+  classic_inputs[4] = {"policy", "string", "corner policy never|strict|one|always (default always)"};
+  r.add(Rule{"classic.plan.ga",
+             "Planner ga-classic: the classic MATLAB GA grid script's defaults (whole run)",
+             "pathref::genetic::run", classic_inputs, plan_outputs,
+             [](const Json& in) { return run_planner(in, "ga-classic", {"ga-classic"}); }});
 }
 
 }  // namespace pathref::rules

@@ -256,7 +256,8 @@ void register_ga(Registry& r) {
       "pathref::ga::smoothness_factor",
       {{"path", "path", "the path (metrics path domain)"},
        {"penalties", "number[]", "optional [P_45, P_90, P_180], default [5, 100, 1000]"},
-       {"smoothness", "string", "per_node (default) | per_turn | angle_times_penalty | inverse_total"}},
+       {"smoothness", "string",
+        "inverse_total_plus_one (default) | per_node | per_turn | angle_times_penalty | inverse_total"}},
       {{"fit2", "number", "the smoothness factor"}},
       [](const Json& in) {
         ga::TurnPenalties p{};
@@ -265,7 +266,7 @@ void register_ga(Registry& r) {
           if (v.size() != 3) throw UsageError("penalties must be [P_45, P_90, P_180]");
           p = ga::TurnPenalties{v[0], v[1], v[2]};
         }
-        const auto reading = ga::parse_smoothness_reading(opt_string(in, "smoothness", "per_node"));
+        const auto reading = ga::parse_smoothness_reading(opt_string(in, "smoothness", "inverse_total_plus_one"));
         return Json{{"fit2", number(ga::smoothness_factor(path_arg(in, "path"), reading, p))}};
       }});
   r.add(Rule{

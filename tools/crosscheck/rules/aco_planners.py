@@ -84,6 +84,10 @@ DEFAULTS = {
                      rho_reading="factor", rho_t_origin=1),
     "iaco-shi-nomin": dict(SHI_COMMON, eta="goal_directed", rho_initial=0.9, rho_min=0.0,
                            rho_reading="factor", rho_t_origin=1),
+    # spec/classic.md r[classic.plan.aco]: the classic MATLAB script's values.
+    "aco-classic": {"ants": 50, "iterations": 100, "alpha": 1.0, "beta": 7.0, "Q": 1.0, "tau0": 8.0,
+                    "rho": 0.3, "eta": "goal_inverse", "eta_goal": 100.0, "edge_sense": "undirected",
+                    "dead_end": "die"},
     "iaco-han": {"ants": 50, "iterations": 50, "alpha": 4.0, "beta": 8.0, "rho": 0.7, "gamma": 1.0,
                  "omega_i": 0.5, "omega_form": "multiply", "at90": "two", "epsilon": 1.0,
                  "q0_origin": 1, "draw_u": "lazy", "h": 1.0, "tau_min": 0.01,
@@ -91,7 +95,7 @@ DEFAULTS = {
                  "rho_min": 0.1, "spread_reference": "iteration_worst", "rho_timing": "next",
                  "eta": "goal_directed", "edge_sense": "directed", "dead_end": "backtrack"},
 }
-CHOICES = {"eta": ("inverse_distance", "goal_directed"), "edge_sense": ("directed", "undirected"),
+CHOICES = {"eta": ("inverse_distance", "goal_directed", "goal_inverse"), "edge_sense": ("directed", "undirected"),
            "dead_end": ("die", "backtrack"), "rho_reading": ("factor", "condition", "clamp"),
            "omega_form": ("multiply", "divide"), "at90": ("two", "one"), "draw_u": ("lazy", "always"),
            "bonus_edges": ("best_path", "all_edges"), "spread_reference": ("iteration_worst", "history_best"),
@@ -116,6 +120,8 @@ def params_for(algo, inp):
     require(isinstance(i("ants"), int) and 1 <= i("ants") <= 10**6, "ants")
     require(isinstance(i("iterations"), int) and 1 <= i("iterations") <= 10**6, "iterations")
     require(p["alpha"] >= 0 and p["beta"] >= 0 and p["Q"] > 0 and p["tau0"] > 0, "alpha beta Q tau0")
+    if "eta_goal" in p:
+        require(math.isfinite(p["eta_goal"]) and p["eta_goal"] > 0, "eta_goal > 0")
     rho = p.get("rho", p.get("rho_initial"))
     require(0 < rho < 1, "rho in (0, 1)")
     if "rho_min" in p:
@@ -137,7 +143,7 @@ def params_for(algo, inp):
 def replay(algo, inp):
     g = Grid(inp["grid"])
     S, E = tuple(inp["start"]), tuple(inp["goal"])
-    pol = inp.get("policy", "strict")
+    pol = inp.get("policy", "always" if algo == "aco-classic" else "strict")
     seed = inp.get("seed", 1)
     require(isinstance(seed, int) and 0 <= seed < 2**32, "seed")
     require(g.free(S), "start outside or blocked")
@@ -187,7 +193,12 @@ def replay(algo, inp):
                 w = []
                 prev = path[-2] if len(path) >= 2 else None
                 for b in cands:
-                    eta = 1.0 / dist(c, b) if p["eta"] == "inverse_distance" else 1.0 / (dist(c, b) + dist(b, E))
+                    if p["eta"] == "inverse_distance":
+                        eta = 1.0 / dist(c, b)
+                    elif p["eta"] == "goal_directed":
+                        eta = 1.0 / (dist(c, b) + dist(b, E))
+                    else:  # goal_inverse: 1 / d(b, E), eta_goal at E
+                        eta = p.get("eta_goal", 100.0) if b == E else 1.0 / dist(b, E)
                     x = math.pow(tau[(c, b)], alpha) * math.pow(eta, beta)
                     if han:
                         if prev is None:
@@ -323,6 +334,10 @@ def plan_iaco(inp):
     return replay(algo, inp)
 
 
+def plan_aco_classic(inp):
+    return replay("aco-classic", inp)
+
+
 def plan_iaco_han(inp):
     return replay("iaco-han", inp)
 
@@ -341,6 +356,7 @@ RULES = {
     "shi2022.plan.aco": plan_aco,
     "shi2022.plan.iaco": plan_iaco,
     "han.plan.iaco": plan_iaco_han,
+    "classic.plan.aco": plan_aco_classic,
     "han.plan.astar": plan_astar_han,
 }
 

@@ -51,8 +51,8 @@ def r_roulette(w, u):
 # ---- inputs ---------------------------------------------------------------------------------
 
 
-def _policy(inp):
-    p = inp.get("policy", "strict")
+def _policy(inp, default="strict"):
+    p = inp.get("policy", default)
     if p not in POLICIES:
         raise UsageError(f"unknown policy {p!r}")
     return p
@@ -94,7 +94,7 @@ def half(s, rounding):
     return lo if lo % 2 == 0 else lo + 1
 
 
-def repair(m, genes, pol, rounding="floor", reject="blocked"):
+def repair(m, genes, pol, rounding="floor", reject="shift", illegal="repair"):
     """r[shi2022.op.init]: (feasible, path, reason)."""
     for c in genes:
         if not m.free(c):
@@ -108,9 +108,21 @@ def repair(m, genes, pol, rounding="floor", reject="blocked"):
         if d == 0:
             del p[k + 1]
         elif d == 1:
-            if not allowed(m, a, b, pol):
+            if allowed(m, a, b, pol):
+                k += 1
+                continue
+            # illegal_step = repair: a disallowed diagonal is "not continuous"; the orthogonal
+            # cell (b.x, a.y), else (a.x, b.y), goes between, if free.
+            if illegal != "repair":
                 return False, [], "illegal_step"
-            k += 1
+            mid = None
+            for q in ((b[0], a[1]), (a[0], b[1])):
+                if q != a and q != b and m.free(q):
+                    mid = q
+                    break
+            if mid is None:
+                return False, [], "illegal_step"
+            p.insert(k + 1, mid)
         else:
             mid = (half(a[0] + b[0], rounding), half(a[1] + b[1], rounding))
             if not m.free(mid) and reject == "shift":
@@ -142,6 +154,24 @@ def common_points(a, b):
     for j in range(1, len(b) - 1):
         first.setdefault(b[j], j)
     return [(k, first[a[k]]) for k in range(1, len(a) - 1) if a[k] in first]
+
+
+def script_points(a, b):
+    """r[classic.plan.ga]: interior k of a whose cell is anywhere in b, j its first index in b."""
+    first = {}
+    for j, c in enumerate(b):
+        first.setdefault(c, j)
+    return [(k, first[a[k]]) for k in range(1, len(a) - 1) if a[k] in first]
+
+
+def round_choice(u, n):
+    """r[classic.plan.ga]: MATLAB round(u * (n - 1)), half away from zero."""
+    require(n >= 1 and 0.0 <= u < 1.0, "round_choice")
+    x = u * float(n - 1)
+    r = math.floor(x)
+    if x - r >= 0.5:  # x - floor(x) is exact; a half rounds away from zero (x >= 0)
+        r += 1
+    return min(int(r), n - 1)
 
 
 def cross(a, b, k, j):
@@ -240,11 +270,13 @@ def fit2(p, cfg):
             ux, uy = p[k][0] - p[k - 1][0], p[k][1] - p[k - 1][1]
             vx, vy = p[k + 1][0] - p[k][0], p[k + 1][1] - p[k][1]
             s += 1.0 / (P[bd] * math.atan2(float(abs(ux * vy - uy * vx)), float(ux * vx + uy * vy)))
-        elif bd and reading == "inverse_total":
+        elif bd and reading in ("inverse_total", "inverse_total_plus_one"):
             s += P[bd]
     if reading == "inverse_total":
         require(turns > 0, "inverse_total without turns")
         return 1.0 / s
+    if reading == "inverse_total_plus_one":
+        return 1.0 / (1.0 + s)
     return s
 
 
@@ -294,18 +326,26 @@ class Ind:
 
 GA_DEFAULTS = {
     "population": 200, "generations": 50, "fitness": "inverse_length", "a": 5.0, "b": 4.0, "c": 1.0,
-    "smoothness": "per_node", "penalties": [5.0, 100.0, 1000.0], "safety_count": "count",
+    "smoothness": "inverse_total_plus_one", "penalties": [5.0, 100.0, 1000.0], "safety_count": "count",
     "safe_node": "one", "safety_nodes": "all_but_goal", "outside": "free",
     "ga_probabilities": "fixed", "pc": 0.8, "pm": 0.1, "pm_max": 0.3, "pc_reading": "printed",
     "pm_reading": "printed", "pm_at_zero": "binary64", "ga_i_origin": 1, "duplicate_gene": "drop",
-    "mid_rounding": "floor", "init_reject": "blocked", "init_attempts": 100000,
-    "crossover_keep": "children", "loops": "keep", "result_by": "fitness",
+    "mid_rounding": "floor", "init_reject": "shift", "init_attempts": 100000,
+    "illegal_step": "repair", "crossover_keep": "children", "loops": "keep", "result_by": "fitness",
 }
+GA_DEFAULTS.update({"init_retry": "per_individual", "selection": "independent",
+                    "crossover_points": "interior", "mutation": "point", "mutation_attempts": 100000})
 IGA = dict(GA_DEFAULTS, fitness="weighted", ga_probabilities="adaptive")
+# spec/classic.md r[classic.plan.ga]: the classic MATLAB GA script's values.
+CLASSIC = dict(GA_DEFAULTS, population=200, generations=50, pc=0.8, pm=0.2, fitness="weighted",
+               a=1.0, b=1.0, c=0.0, smoothness="inverse_total", penalties=[3.0, 15.0, 20.0],
+               init_reject="shift", init_retry="none", selection="sorted",
+               crossover_points="script", mutation="segment")
 PLANNER_DEFAULTS = {
     "ga": GA_DEFAULTS,
     "iga-shi": IGA,
     "iga-shi-nomax": dict(IGA, pm_max=1.0),
+    "ga-classic": CLASSIC,
 }
 
 
@@ -339,21 +379,27 @@ def init_paths(m, S, E, pol, cfg, st, count):
             return False, "row_blocked", [], 0
         F.append(xs)
     paths, chains = [], 0
+    attempts = 1 if cfg["init_retry"] == "none" else cfg["init_attempts"]
     for _ in range(count):
         got = None
-        for _attempt in range(cfg["init_attempts"]):
+        for _attempt in range(attempts):
             genes = [S]
             for y, xs in zip(rows, F):
                 genes.append((xs[r_index(st.u(), len(xs))], y))
             genes.append(E)
             chains += 1
-            ok, p, _ = repair(m, genes, pol, cfg["mid_rounding"], cfg["init_reject"])
+            ok, p, _ = repair(m, genes, pol, cfg["mid_rounding"], cfg["init_reject"],
+                              cfg["illegal_step"])
             if ok:
                 got = p
                 break
         if got is None:
+            if cfg["init_retry"] == "none":
+                continue  # the classic script drops a rejected chain
             return False, "init_attempts_exhausted", paths, chains
         paths.append(got)
+    if not paths:
+        return False, "init_all_rejected", paths, chains
     return True, "", paths, chains
 
 
@@ -386,15 +432,25 @@ def evolve(m, pol, cfg, st, pop, elitist=False):
     for i in range(1, cfg["generations"] + 1):
         pc, pm = probabilities(cfg, i)
         f = [q.fit for q in pop]
-        pool = [pop[r_roulette(f, st.u())] for _ in range(S)]
+        if cfg["selection"] == "sorted":
+            us = sorted(st.u() for _ in range(S))
+            pool = [pop[r_roulette(f, u)] for u in us]
+        else:
+            pool = [pop[r_roulette(f, st.u())] for _ in range(S)]
         for q in range(S // 2):
             A, B = pool[2 * q], pool[2 * q + 1]
             if not st.u() < pc:
                 continue
-            pts = common_points(A.path, B.path)
-            if not pts:
-                continue
-            k, j = pts[r_index(st.u(), len(pts))]
+            if cfg["crossover_points"] == "script":
+                pts = script_points(A.path, B.path)
+                if not pts:
+                    continue
+                k, j = pts[round_choice(st.u(), len(pts))]
+            else:
+                pts = common_points(A.path, B.path)
+                if not pts:
+                    continue
+                k, j = pts[r_index(st.u(), len(pts))]
             p1, p2 = cross(A.path, B.path, k, j)
             if cfg["loops"] == "cut":
                 p1, p2 = cut_loops(p1), cut_loops(p2)
@@ -412,6 +468,24 @@ def evolve(m, pol, cfg, st, pop, elitist=False):
                 continue
             p = pool[a].path
             if len(p) < 3:
+                continue
+            if cfg["mutation"] == "segment":
+                for _t in range(cfg["mutation_attempts"]):
+                    k1 = 1 + round_choice(st.u(), len(p) - 2)
+                    k2 = 1 + round_choice(st.u(), len(p) - 2)
+                    lo, hi = min(k1, k2), max(k1, k2)
+                    ok, sl, _ = repair(m, [p[lo - 1], p[hi + 1]], pol, cfg["mid_rounding"],
+                                       cfg["init_reject"], cfg["illegal_step"])
+                    if not ok:
+                        continue
+                    if len(sl) >= 2:
+                        np_ = p[:lo] + sl[1:-1] + p[hi + 1:]
+                    else:  # both ends the same cell: drop the loop and one copy
+                        np_ = p[:lo] + p[hi + 2:]
+                    if cfg["loops"] == "cut":
+                        np_ = cut_loops(np_)
+                    pool[a] = Ind(m, np_, cfg, "mutation", i)
+                    break
                 continue
             k = 1 + r_index(st.u(), len(p) - 2)
             cands = candidates(m, p, k, pol)
@@ -439,10 +513,10 @@ def _num_out(v):
     return v
 
 
-def _setup(inp):
+def _setup(inp, default_policy="strict"):
     m = Map(inp["grid"])
     S, E = cell(inp["start"]), cell(inp["goal"])
-    pol = _policy(inp)
+    pol = _policy(inp, default_policy)
     seed = inp["seed"]
     require(isinstance(seed, int) and 0 <= seed <= 0xFFFFFFFF, "seed")
     require(m.inside(S) and m.inside(E), "start/goal outside the grid")
@@ -460,23 +534,30 @@ def plan_ga(inp, default_algo="ga", algos=("ga",)):
     if algo not in algos:
         raise UsageError("algo not covered")
     cfg = _config(inp, PLANNER_DEFAULTS[algo])
-    m, S, E, pol, seed = _setup(inp)
+    m, S, E, pol, seed = _setup(inp, "always" if algo == "ga-classic" else "strict")
     if S == E:
         return dict(_trivial(S), best_generation=0, best_origin="init", init_chains=0)
     st = Stream(seed)
     ok, failure, paths, chains = init_paths(m, S, E, pol, cfg, st, cfg["population"])
     if not ok:
         return {"found": False, "path": [], "length": 0.0, "iterations": 0, "best_per_iteration": [],
-                "mean_per_iteration": [], "failure": failure, "draws": st.drawn, "init_chains": chains}
+                "mean_per_iteration": [], "failure": failure, "draws": st.drawn, "init_chains": chains,
+                "population_size": 0, "init_built": len(paths),
+                "init_exhausted": failure == "init_attempts_exhausted"}
     pop = [Ind(m, p, cfg, "init", 0) for p in paths]
     best, bg, bests, means = evolve(m, pol, cfg, st, pop)
     return {"found": True, "path": _out_path(best.path), "length": best.length,
             "iterations": cfg["generations"], "best_per_iteration": bests, "mean_per_iteration": means,
-            "best_generation": bg, "best_origin": best.origin, "draws": st.drawn, "init_chains": chains}
+            "best_generation": bg, "best_origin": best.origin, "draws": st.drawn, "init_chains": chains,
+            "population_size": len(pop), "init_built": len(paths), "init_exhausted": False}
 
 
 def plan_iga(inp):
     return plan_ga(inp, "iga-shi", ("iga-shi", "iga-shi-nomax"))
+
+
+def plan_ga_classic(inp):
+    return plan_ga(inp, "ga-classic", ("ga-classic",))
 
 
 # ---- the hybrids (r[shi2022.plan.hybrid], r[shi2022.plan.iha]) ------------------------------
@@ -693,7 +774,8 @@ def op_init(inp):
     require(len(genes) >= 2, "two genes")
     require(all(m.inside(c) for c in genes), "gene outside")
     ok, p, why = repair(m, genes, _policy(inp), _opt(inp, "mid_rounding", ["floor", "ceil", "half_even"]),
-                        _opt(inp, "init_reject", ["blocked", "near_obstacle", "shift"]))
+                        _opt(inp, "init_reject", ["shift", "blocked", "near_obstacle"]),
+                        _opt(inp, "illegal_step", ["repair", "reject"]))
     return {"feasible": ok, "path": _out_path(p), "reason": why}
 
 
@@ -760,6 +842,7 @@ RULES = {
     "shi2022.plan.iga": plan_iga,
     "shi2022.plan.hybrid": plan_hybrid,
     "shi2022.plan.iha": plan_iha,
+    "classic.plan.ga": plan_ga_classic,
 }
 
 __all__ = ["RULES", "DomainError"]

@@ -357,7 +357,8 @@ def eq14(inp):
 
 def eq16(inp):
     path = _path(inp["path"])
-    reading = _choice(inp, "smoothness", ["per_node", "per_turn", "angle_times_penalty", "inverse_total"])
+    reading = _choice(inp, "smoothness", ["inverse_total_plus_one", "per_node", "per_turn",
+                                          "angle_times_penalty", "inverse_total"])
     pen = [_num(v) for v in inp.get("penalties", [5, 100, 1000])]
     if len(pen) != 3:
         raise UsageError("penalties")
@@ -376,11 +377,13 @@ def eq16(inp):
             s += 1.0 / p
         elif band and reading == "angle_times_penalty":
             s += 1.0 / (p * _theta(path[k - 1], path[k], path[k + 1]))
-        elif band and reading == "inverse_total":
+        elif band and reading in ("inverse_total", "inverse_total_plus_one"):
             s += p
     if reading == "inverse_total":
         require(turns > 0, "no turn: 1/0")
         return {"fit2": 1.0 / s}
+    if reading == "inverse_total_plus_one":
+        return {"fit2": 1.0 / (1.0 + s)}
     return {"fit2": s}
 
 
