@@ -22,8 +22,9 @@ grep -qE "^  policy +strict \(diagonal needs both orthogonal neighbours free\)$"
   || { echo "FAIL: explicit policy line"; cat "$tmp/out"; exit 1; }
 grep -qF 'no (no ant or individual reached the goal in the iterations run; this does not prove the goal unreachable)' "$tmp/out" \
   || { echo "FAIL: colony no-path message"; cat "$tmp/out"; exit 1; }
-# ga-classic on the built-in 6x6 map, JSON out.
-"$pathref" plan --builtin grid20 --algo ga-classic --set population=20 --set generations=4 --json >"$tmp/ga.json"
+# ga-classic on a 10x10 map (the golden vectors' map), JSON out.
+printf 'pathref-grid 1\nname m10\nsize 10 10\nstart 0 0\ngoal 9 9\nmap\n..........\n...##.....\n.#....#...\n.#..#.#.#.\n....#...#.\n.##.#.#...\n......#.#.\n.#.##.....\n.#.....##.\n..........\n' >"$tmp/m10.txt"
+"$pathref" plan --map "$tmp/m10.txt" --algo ga-classic --set population=20 --set generations=4 --json >"$tmp/ga.json"
 python3 - "$tmp/ga.json" <<'PY'
 import json, sys
 d = json.load(open(sys.argv[1]))

@@ -13,6 +13,7 @@
 #include "pathref/equations/aco.hpp"
 #include "pathref/equations/ga_operators.hpp"
 #include "pathref/equations/metrics.hpp"
+#include "pathref/grid/json_codec.hpp"
 #include "pathref/io/builtin_maps.hpp"
 #include "pathref/io/map_file.hpp"
 #include "pathref/planners/default_policy.hpp"
@@ -201,12 +202,15 @@ TEST_CASE("classic.plan.ga: the classic script's defaults, dropped chains, sorte
                                       ga::InitReject::shift, ga::IllegalStep::repair);
   REQUIRE(l.has_value());
   CHECK(*l == Path{{0, 0}, {1, 0}, {1, 1}});
-  // A whole run on grid20: valid under always; the population is the surviving chains.
-  const io::MapFile s6 = io::load_builtin_map(*io::find_builtin_map("grid20"));
+  // A whole run on a 10x10 map (the golden vectors'): valid under always; the population is the
+  // surviving chains.
+  const Grid m10 = grid::grid_from_json(planners::Json::array(
+      {"..........", "...##.....", ".#....#...", ".#..#.#.#.", "....#...#.", ".##.#.#...",
+       "......#.#.", ".#.##.....", ".#.....##.", ".........."}));
   const planners::Result r =
-      plan("ga-classic", s6.grid, Cell{0, 0}, Cell{19, 19}, 3, {{"population", 20}, {"generations", 5}});
+      plan("ga-classic", m10, Cell{0, 0}, Cell{9, 9}, 3, {{"population", 20}, {"generations", 5}});
   REQUIRE(r.found);
-  CHECK(metrics::validate_path(s6.grid, r.path, Cell{0, 0}, Cell{19, 19}, CornerPolicy::always).valid);
+  CHECK(metrics::validate_path(m10, r.path, Cell{0, 0}, Cell{9, 9}, CornerPolicy::always).valid);
   CHECK(r.extra.at("init_chains") == 20);
   CHECK(r.extra.at("population_size").get<std::int64_t>() <= 20);
   CHECK(r.extra.at("population_size") == r.extra.at("init_built"));
@@ -214,7 +218,13 @@ TEST_CASE("classic.plan.ga: the classic script's defaults, dropped chains, sorte
   CHECK_THROWS_AS(plan("ga-classic", Grid(3, 3), Cell{0, 0}, Cell{2, 2}, 1,
                        {{"population", 20}, {"generations", 2}}),
                   DomainError);
-  CHECK_THROWS_AS(plan("ga-classic", s6.grid, Cell{0, 0}, Cell{19, 19}, 1, {{"mutation", "x"}}), UsageError);
+  CHECK_THROWS_AS(plan("ga-classic", m10, Cell{0, 0}, Cell{9, 9}, 1, {{"mutation", "x"}}), UsageError);
+  // On grid20 every one of 20 chains is rejected: the population is empty, found = false.
+  const io::MapFile g20 = io::load_builtin_map(*io::find_builtin_map("grid20"));
+  const planners::Result none =
+      plan("ga-classic", g20.grid, Cell{0, 0}, Cell{19, 19}, 1, {{"population", 20}, {"generations", 2}});
+  CHECK_FALSE(none.found);
+  CHECK(none.extra.at("failure") == "init_all_rejected");
 }
 
 TEST_CASE("prop: classic planners return valid paths and replay by seed") {
