@@ -329,6 +329,7 @@ TEST_CASE("shi2022.plan.ga: initialisation without the pair table (wide map) equ
       g.set_blocked(Cell{299, h - 1}, false);
       genetic::Config c = genetic::shi_ga();
       c.init_reject = rej;
+      c.illegal_step = ga::IllegalStep::reject;  // keeps rejected chains in play on this open map
       c.init_attempts = 500;
       rng::Stream s1(3);
       rng::Stream s2(3);
