@@ -21,6 +21,7 @@
 #include "pathref/core/error.hpp"
 #include "pathref/grid/grid.hpp"
 #include "pathref/io/map_file.hpp"
+#include "pathref/reproduce/cin2021.hpp"
 #include "pathref/reproduce/han.hpp"
 #include "pathref/reproduce/shi2022.hpp"
 
@@ -41,6 +42,8 @@ struct ReproduceOptions {
   std::string out_dir = "docs/reproduction";
   std::string policy = "strict";
   std::string orientation = "paper";
+  std::string map_b;
+  std::string map_c;
   bool quick = false;
 };
 
@@ -218,6 +221,30 @@ int run_han_cmd(const ReproduceOptions& o) {
                        reproduce::han_figures(doc));
 }
 
+int run_cin2021_cmd(const ReproduceOptions& o) {
+  reproduce::CinConfig cfg;
+  cfg.quick = o.quick;
+  cfg.runs = o.runs.empty() ? (o.quick ? 3 : 20) : parse_int(o.runs, "--runs", 2, 10000);
+  cfg.seed = static_cast<std::uint32_t>(parse_int(o.seed, "--seed", 0, 0xFFFFFFFFLL));
+  cfg.policy = grid::parse_corner_policy(o.policy);
+  if (static_cast<std::uint64_t>(cfg.seed) + static_cast<std::uint64_t>(cfg.runs) - 1 > 4294967295ULL)
+    throw UsageError("--seed + --runs - 1 must not exceed 4294967295");
+  if (!o.map_b.empty()) cfg.map_b = reproduce::ProtocolMap{o.map_b, load_grid(o.map_b)};
+  if (!o.map_c.empty()) cfg.map_c = reproduce::ProtocolMap{o.map_c, load_grid(o.map_c)};
+  std::string command = fmt::format("pathref reproduce cin2021-hga-aco --runs {} --seed {} --policy {}", cfg.runs,
+                                    cfg.seed, o.policy);
+  if (!o.map_b.empty()) command += " --map-b " + o.map_b;
+  if (!o.map_c.empty()) command += " --map-c " + o.map_c;
+  if (o.quick) command += " --quick";
+  command += " --out-dir " + o.out_dir;
+  cfg.provenance = provenance(command);
+  cfg.progress = progress_printer();
+  const Json doc = reproduce::run_cin2021(cfg);
+  return write_outputs(doc, o.out_dir, "cin2021-hga-aco",
+                       reproduce::cin2021_markdown(doc, "cin2021-hga-aco", "cin2021-hga-aco/reproduce.json"),
+                       reproduce::cin2021_figures(doc));
+}
+
 void add_common(CLI::App* cmd, ReproduceOptions& o) {
   cmd->add_option("--runs", o.runs, "runs per stochastic planner and map (default 50; 3 with --quick)")->type_name("N");
   cmd->add_option("--seed", o.seed, "first seed; run r uses seed + r (spec/reproduce.md)")
@@ -238,6 +265,7 @@ void add_common(CLI::App* cmd, ReproduceOptions& o) {
 void add_reproduce_command(CLI::App& app, Action& run) {
   static ReproduceOptions shi;
   static ReproduceOptions han;
+  static ReproduceOptions cin;
   auto* cmd = app.add_subcommand("reproduce", "Run a paper's experiments and write the report, JSON and figures "
                                               "(spec/reproduce.md)");
   cmd->require_subcommand(1);
@@ -263,6 +291,14 @@ void add_reproduce_command(CLI::App& app, Action& run) {
   h->add_option("--edges", han.edges, "comma-separated map edges (default 10,15,...,100; 10,15 with --quick)")
       ->type_name("LIST");
   h->callback([&run] { run = [] { return run_han_cmd(han); }; });
+  auto* c = cmd->add_subcommand("cin2021-hga-aco",
+                                "cin2021 §5.6: HGA-ACO vs ACO vs GA on three 20x20 scenarios (Table 3), "
+                                "and on Shi's maps B and C when given");
+  add_common(c, cin);
+  c->add_option("--map-b", cin.map_b, "Shi's complex map (matlab-maps/mapB_20x20_ga.txt), optional")->type_name("FILE");
+  c->add_option("--map-c", cin.map_c, "Shi's simple map (matlab-maps/mapC_20x20_winsleo_traditional.txt), optional")
+      ->type_name("FILE");
+  c->callback([&run] { run = [] { return run_cin2021_cmd(cin); }; });
 }
 
 }  // namespace pathref::cli

@@ -13,8 +13,10 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
+#include "pathref/equations/cin2021.hpp"
 #include "pathref/equations/ga.hpp"
 #include "pathref/equations/ga_operators.hpp"
 #include "pathref/grid/grid.hpp"
@@ -29,6 +31,7 @@ using planners::Json;
 enum class Fitness {
   inverse_length,  ///< Eq. 10: 1 / length (single GA)
   weighted,        ///< Eq. 14-18: a fit1 + b fit2 + c fit3 (improved GA)
+  cin,             ///< cin2021 Eq. 20-26: a f1 + b f2, f2 of the corner penalties (ga-cin)
 };
 /// Option `ga_probabilities` of spec/shi2022.md "Options for the planners".
 enum class Probabilities {
@@ -44,6 +47,22 @@ enum class Scale {
 enum class CrossoverKeep {
   children,  ///< both children replace the parents (Figure 3)
   best_two,  ///< the two shortest of (parent a, parent b, child 1, child 2), ties in that order
+  best_two_fitness,  ///< the two fittest of (a, b, c1, c2), ties in that order (cin2021.op.crossover)
+};
+/// Option `crossover`: what happens to a pair without a common gene.
+enum class Crossover {
+  common_gene,  ///< no crossover (Shi Figure 3: only at a common node)
+  cin,          ///< random cut genes and the chain repair (cin2021 Figure 8a, ga::crossover_cut)
+};
+/// Option `init`: how the initial population is made.
+enum class Init {
+  rows,  ///< Shi Sec. 4.2: one random free cell per row, chains repaired (initial_paths)
+  walk,  ///< cin2021 (pathref reading): random depth-first walks S -> G (initial_walks)
+};
+/// Option `mutation`.
+enum class Mutation {
+  point,             ///< Shi Figure 4: one gene replaced by a neighbour candidate
+  multidirectional,  ///< cin2021 Figure 9: mutants A and B re-searched, the fitter kept
 };
 /// Option `loops` (spec shi2022.plan.ga step 5): what happens to a child that visits a cell twice.
 enum class Loops {
@@ -71,6 +90,12 @@ enum class Origin { init, aco, crossover, mutation };
 [[nodiscard]] ResultBy parse_result_by(std::string_view name);
 [[nodiscard]] std::string_view to_string(ResultBy v) noexcept;
 [[nodiscard]] std::string_view to_string(Origin v) noexcept;
+[[nodiscard]] Crossover parse_crossover(std::string_view name);
+[[nodiscard]] std::string_view to_string(Crossover v) noexcept;
+[[nodiscard]] Init parse_init(std::string_view name);
+[[nodiscard]] std::string_view to_string(Init v) noexcept;
+[[nodiscard]] Mutation parse_mutation(std::string_view name);
+[[nodiscard]] std::string_view to_string(Mutation v) noexcept;
 
 /// Every setting of one GA run. Defaults: the single GA with Table 1 values (planner `ga`).
 struct Config {
@@ -99,6 +124,14 @@ struct Config {
   /// parents ++ children. false for the single and improved GA.
   bool elitist = false;
   double elite_fraction = 0.5;
+  // ---- cin2021 options (spec/cin2021-hga-aco.md); listed by to_params when any is not Shi's ----
+  Init init = Init::rows;
+  Crossover crossover = Crossover::common_gene;
+  Mutation mutation = Mutation::point;
+  ga::Research research = ga::Research::greedy;
+  cin::CornerPenalties corner_penalties{};  ///< c135, c90, c45 of cin2021 Eq. 24
+  cin::F2Guard f2_guard = cin::F2Guard::one_plus;
+  cin::AngleReading angle = cin::AngleReading::arccos;
 };
 
 /// Defaults of planner `ga` (spec shi2022.plan.ga): the Config defaults.
@@ -107,6 +140,11 @@ struct Config {
 [[nodiscard]] Config shi_iga();
 /// Defaults of planner `iga-shi-nomax` (IGA*): shi_iga() with pm_max = 1 (Eq. 20 never caps).
 [[nodiscard]] Config shi_iga_nomax();
+/// Defaults of planner `ga-cin` (spec cin2021.plan.ga): fitness cin (a = 1, b = 0.1), crossover
+/// cin with crossover_keep best_two_fitness, mutation multidirectional (research greedy), loops
+/// cut, population 50, generations 50, pc 0.8, pm 0.2 -- the project's defaults of the lost
+/// Sec. 5.6 parameters, not the paper's. Spec: cin2021.plan.ga
+[[nodiscard]] Config cin_ga();
 
 /// The planner parameters of a config (names of spec/shi2022-ga.md "Parameters"); every setting
 /// is listed. `elitist` is not a parameter (it is fixed by the planner).
@@ -135,6 +173,15 @@ struct Individual {
 [[nodiscard]] Individual make_individual(const grid::Grid& g, std::vector<grid::Cell> path,
                                          const Config& c, Origin origin, std::int64_t born);
 
+/// The crossover's "keep" step for one pair: `children` returns (c1, c2); `best_two` the two
+/// shortest of (a, b, c1, c2) and `best_two_fitness` the two fittest (cin2021.op.crossover: "select
+/// the best individuals from the parent and offspring"), both by a stable sort (ties in the order
+/// a, b, c1, c2). Spec: shi2022.plan.ga (step 3), cin2021.op.crossover.
+/// Post (best_two_fitness): max(fitness of the result) == max(fitness of the four): the pair's
+/// best is never lost.
+[[nodiscard]] std::pair<Individual, Individual> keep_two(Individual a, Individual b, Individual c1,
+                                                         Individual c2, CrossoverKeep by);
+
 /// What initial_paths returns.
 struct InitOutcome {
   bool ok = false;
@@ -161,12 +208,26 @@ inline constexpr std::int64_t init_verdict_max_entries = std::int64_t{1} << 20;
                                         grid::CornerPolicy policy, const Config& c,
                                         rng::Stream& stream, std::int64_t count);
 
+/// `count` initial paths by random depth-first walks (option init = walk, spec cin2021.plan.ga
+/// "Initialisation"): individual a = ga::research_walk(start -> goal, nothing avoided, random,
+/// backtrack) drawing from `stream`; failure "unreachable" when a walk fails (then every walk
+/// would). Spec: cin2021.plan.ga. Pre: start != goal, both in bounds and free (DomainError).
+[[nodiscard]] InitOutcome initial_walks(const grid::Grid& g, grid::Cell start, grid::Cell goal,
+                                        grid::CornerPolicy policy, rng::Stream& stream,
+                                        std::int64_t count);
+
+/// initial_paths or initial_walks by c.init. Spec: shi2022.plan.ga, cin2021.plan.ga.
+[[nodiscard]] InitOutcome initial_population(const grid::Grid& g, grid::Cell start, grid::Cell goal,
+                                             grid::CornerPolicy policy, const Config& c,
+                                             rng::Stream& stream, std::int64_t count);
+
 /// What evolve returns.
 struct Evolution {
   Individual best;                          ///< best by result_by over generations 0..M_g
   std::int64_t best_generation = 0;         ///< generation that first held it (0 = initial)
   std::vector<double> best_per_generation;  ///< length of the best-so-far after generation i
   std::vector<double> mean_per_generation;  ///< mean length of the population after generation i
+  std::vector<Individual> final_population;  ///< the population after the last generation
 };
 
 /// The generation loop (spec shi2022.plan.ga steps 2-5; with c.elitist, shi2022.plan.iha steps
@@ -176,10 +237,10 @@ struct Evolution {
 [[nodiscard]] Evolution evolve(const grid::Grid& g, grid::CornerPolicy policy, const Config& c,
                                rng::Stream& stream, std::vector<Individual> population);
 
-/// A whole single-GA / improved-GA run (spec shi2022.plan.ga / shi2022.plan.iga): initial
-/// population, then evolve. Result.extra: best_generation, best_origin, draws, init_chains,
-/// failure (when !found).
-/// Spec: shi2022.plan.ga, shi2022.plan.iga
+/// A whole single-GA / improved-GA / ga-cin run (spec shi2022.plan.ga / shi2022.plan.iga /
+/// cin2021.plan.ga): initial population, then evolve. Result.extra: best_generation,
+/// best_origin, draws, init_chains, failure (when !found).
+/// Spec: shi2022.plan.ga, shi2022.plan.iga, cin2021.plan.ga
 /// Pre: req.grid set (UsageError); start, goal in bounds and free (DomainError).
 /// Post: found => path valid under req.policy, length = metrics::path_length(path).
 [[nodiscard]] planners::Result run(const planners::Request& req, const Config& c,
@@ -195,5 +256,8 @@ namespace pathref::planners {
 [[nodiscard]] Planner make_iga_shi_planner();
 /// Planner "iga-shi-nomax": IGA* (no P_m_max cap). Spec: shi2022.plan.iga
 [[nodiscard]] Planner make_iga_shi_nomax_planner();
+/// Planner "ga-cin": the optimised GA of cin2021 Sec. 5.3 (Eq. 20-27, Figures 8-9).
+/// Spec: cin2021.plan.ga
+[[nodiscard]] Planner make_ga_cin_planner();
 
 }  // namespace pathref::planners

@@ -10,9 +10,10 @@ from . import han
 from . import han_sim
 from . import ga_planners
 from . import aco_planners
+from . import cin2021
 
 RULES = {}
-for _module in (rng, search, grid, metrics, mecanum, shi2022, han, han_sim, inflation, ga_planners, aco_planners):
+for _module in (rng, search, grid, metrics, mecanum, shi2022, han, han_sim, inflation, ga_planners, aco_planners, cin2021):
     for _id, _fn in _module.RULES.items():
         assert _id not in RULES, _id
         RULES[_id] = _fn
