@@ -11,9 +11,11 @@ from . import han_sim
 from . import ga_planners
 from . import aco_planners
 from . import cin2021
+from . import cin2021_srrt
 
 RULES = {}
-for _module in (rng, search, grid, metrics, mecanum, shi2022, han, han_sim, inflation, ga_planners, aco_planners, cin2021):
+for _module in (rng, search, grid, metrics, mecanum, shi2022, han, han_sim, inflation, ga_planners, aco_planners, cin2021,
+                cin2021_srrt):
     for _id, _fn in _module.RULES.items():
         assert _id not in RULES, _id
         RULES[_id] = _fn
