@@ -62,7 +62,7 @@ void BM_segment_check(benchmark::State& state) {
   }
   std::size_t i = 0, free = 0;
   for (auto _ : state) {
-    const auto& [a, b] = segs[i++ & 4095];
+    const auto& [a, b] = segs[i++ & 4095u];
     free += m.segment_free(a, b) ? 1 : 0;
   }
   benchmark::DoNotOptimize(free);

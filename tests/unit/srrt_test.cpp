@@ -76,7 +76,7 @@ TEST_CASE("cin2021.srrt.collision: grid cells are closed unit squares, diagonal 
   CHECK(m.polygon_count() == 2);
   CHECK(m.lower() == Vec2{0.0, 0.0});
   CHECK(m.upper() == Vec2{4.0, 4.0});
-  CHECK_FALSE(m.segment_free({0.5, 3.5}, {3.5, 0.5}));  // through the shared corner
+  CHECK_FALSE(m.segment_free({0.5, 0.5}, {3.5, 3.5}));  // y = x meets both squares only at their shared corner (2, 2)
   CHECK(m.segment_free({0.5, 0.5}, {3.5, 0.5}));
   CHECK_FALSE(m.point_free({1.5, 2.5}));
   CHECK(m.point_free({0.5, 0.5}));

@@ -1,5 +1,6 @@
 #include "pathref/continuous/srrt.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
