@@ -47,8 +47,13 @@ Json points_json(const std::vector<Vec2>& v) {
   return a;
 }
 
+/// The scene part of a rule input (its geometry keys only: the other inputs of a rule, such as
+/// `start` in world coordinates, are not the scene's).
 ObstacleMap obstacles_of(const Json& in) {
-  return ObstacleMap::from_scene(scene_from_json(in, "<input>", SceneKeys::geometry));
+  Json geo = Json::object();
+  for (const char* k : {"origin", "width", "height", "cell_size", "radius", "margin", "polygons"})
+    if (in.contains(k)) geo[k] = in.at(k);
+  return ObstacleMap::from_scene(scene_from_json(geo, "<input>", SceneKeys::geometry));
 }
 
 const std::vector<rules::Field> scene_fields = {

@@ -137,7 +137,6 @@ TEST_CASE("prop_collision_agrees_with_float_oracle") {
       for (const auto& q : rs.rects)
         d = std::min(d, seg_rect_distance(a, b, q[0] / 4.0, q[1] / 4.0, q[2] / 4.0, q[3] / 4.0));
       const bool free = m.segment_free(a, b);
-      RC_TAG(free ? "free" : "collides");
       if (d > r + 1e-9) RC_ASSERT(free);
       if (d < r - 1e-9) RC_ASSERT(!free);
       if (std::isfinite(d)) RC_ASSERT(std::abs(m.segment_distance(a, b) - d) <= 1e-9);
