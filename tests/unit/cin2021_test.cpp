@@ -52,8 +52,10 @@ TEST_CASE("cin2021.eq18: collinear segments give exactly +-1", "[cin2021]") {
 TEST_CASE("cin2021.eq24: penalty classes with the arccos tolerance", "[cin2021]") {
   // the straight diagonal under arccos is a hair below 180 degrees: still class 0
   const double t = cin::included_angle(std::sqrt(2.0), std::sqrt(2.0), std::sqrt(8.0));
-  CHECK(t < 180.0);
+  CHECK(t <= 180.0);
+  CHECK(t > 180.0 - cin::angle_epsilon_deg);
   CHECK(cin::corner_penalty(t) == 0.0);
+  CHECK(cin::corner_penalty(180.0 - 1.2e-6) == 0.0);  // arccos of -1 + 2^-52
   CHECK(cin::corner_penalty(135.0) == 5.0);
   CHECK(cin::corner_penalty(90.0) == 100.0);
   CHECK(cin::corner_penalty(45.0) == 1000.0);
@@ -148,8 +150,17 @@ TEST_CASE("cin2021 planners: registered with the spec's default parameters", "[c
 }
 
 TEST_CASE("cin2021.plan.aco: the dead-angle table fills the concave trap", "[cin2021]") {
+  // a one-cell-wide spur (3,1)-(3,2) off the corridor y = 0: under cul_de_sac exactly its two
+  // cells are recorded, the bottom of the trap first
+  const grid::Grid spur = rows({"###.###", "###.###", "......."});
+  const auto s = run("aco-cin", spur, Cell{0, 0}, Cell{6, 0}, 3, planners::Json{{"ants", 10}, {"iterations", 5}});
+  REQUIRE(s.found);
+  CHECK(s.extra.at("dead_angle_table") == planners::Json::parse("[[3,2],[3,1]]"));
+  CHECK(s.path == std::vector<Cell>{{0, 0}, {1, 0}, {2, 0}, {3, 0}, {4, 0}, {5, 0}, {6, 0}});
+  // the three-row pocket of the trap has no cul-de-sac; any_stuck records where ants got stuck
   const grid::Grid g = rows(trap);
-  const auto r = run("aco-cin", g, Cell{0, 5}, Cell{9, 5}, 3, planners::Json{{"ants", 10}, {"iterations", 5}});
+  const auto r = run("aco-cin", g, Cell{0, 5}, Cell{9, 5}, 3,
+                     planners::Json{{"ants", 10}, {"iterations", 5}, {"dead_angle_record", "any_stuck"}});
   REQUIRE(r.found);
   const auto& table = r.extra.at("dead_angle_table");
   CHECK(!table.empty());
