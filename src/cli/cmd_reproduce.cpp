@@ -299,6 +299,7 @@ void add_reproduce_command(CLI::App& app, Action& run) {
   c->add_option("--map-c", cin.map_c, "Shi's simple map (matlab-maps/mapC_20x20_winsleo_traditional.txt), optional")
       ->type_name("FILE");
   c->callback([&run] { run = [] { return run_cin2021_cmd(cin); }; });
+  add_reproduce_cin2021_ml(cmd, run);
 }
 
 }  // namespace pathref::cli

@@ -40,6 +40,9 @@ void add_map_read_options(CLI::App* cmd, MapReadArgs& args);
 void add_inflate_command(CLI::App& app, Action& run);  // inflate (spec/inflation.md#cli)
 void add_simulate_command(CLI::App& app, Action& run);  // simulate (spec/han-sim.md#cli)
 void add_reproduce_command(CLI::App& app, Action& run);  // reproduce (spec/reproduce.md)
+void add_learn_commands(CLI::App& app, Action& run);  // learn, classify (spec/cin2021-ml.md#cli)
+/// `reproduce cin2021-ml` (spec/cin2021-ml.md#reproduction), added to the reproduce command.
+void add_reproduce_cin2021_ml(CLI::App* reproduce, Action& run);
 
 /// "X,Y" with X and Y non-negative decimal integers (at most 18 digits) -> Cell; UsageError
 /// naming `option` otherwise (spec/cli.md#plan, values). Defined in cmd_plan.cpp.

@@ -196,6 +196,9 @@ namespace {
 
 Json tree_json(const Tree& t) {
   Json feature = Json::array(), threshold = Json::array(), left = Json::array(), right = Json::array();
+  Json tied = Json::array();
+  for (std::size_t i = 0; i < t.nodes.size(); ++i)
+    if (t.nodes[i].tied) tied.push_back(i);
   for (const auto& n : t.nodes) {
     feature.push_back(n.feature);
     threshold.push_back(n.threshold);
@@ -203,7 +206,7 @@ Json tree_json(const Tree& t) {
     right.push_back(n.right);
   }
   return Json{{"feature", feature}, {"threshold", threshold}, {"left", left}, {"right", right},
-              {"value", t.value}, {"tied_splits", t.tied_splits}};
+              {"value", t.value}, {"tied_splits", t.tied_splits}, {"tied", tied}};
 }
 
 Tree tree_from(const Json& j, std::size_t classes, std::size_t features) {
@@ -220,6 +223,12 @@ Tree tree_from(const Json& j, std::size_t classes, std::size_t features) {
   for (std::size_t i = 0; i < feature.size(); ++i)
     t.nodes.push_back(Tree::Node{feature[i], threshold[i], left[i], right[i]});
   if (j.contains("tied_splits")) t.tied_splits = j.at("tied_splits").get<std::size_t>();
+  if (j.contains("tied"))
+    for (const Json& i : j.at("tied")) {
+      const auto n = i.get<std::size_t>();
+      if (n >= t.nodes.size()) throw DomainError("tree: tied node index out of range");
+      t.nodes[n].tied = true;
+    }
   validate(t);
   return t;
 }

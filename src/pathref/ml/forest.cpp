@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numeric>
 #include <string>
+#include <utility>
 
 #include "pathref/core/error.hpp"
 #include "pathref/rng/draws.hpp"
@@ -82,7 +83,7 @@ Tree grow_tree(const Dataset& d, std::span<const std::int64_t> weights, const Tr
     require(!root.rows.empty(), "grow_tree: every weight is 0");
     stack.push_back(std::move(root));
   }
-  std::vector<std::size_t> sorted;
+  std::vector<std::pair<double, std::size_t>> sorted;
   std::vector<std::int64_t> left(k), total(k), right(k);
   std::vector<std::size_t> pool;
   while (!stack.empty()) {
@@ -131,17 +132,16 @@ Tree grow_tree(const Dataset& d, std::span<const std::int64_t> weights, const Tr
     int best_feature = -1;
     double best_threshold = 0.0;
     for (const std::size_t j : candidates) {
-      sorted = task.rows;
-      std::sort(sorted.begin(), sorted.end(), [&](std::size_t a, std::size_t b) {
-        const double xa = d.x[a * f + j];
-        const double xb = d.x[b * f + j];
-        return xa < xb || (xa == xb && a < b);
-      });
+      // (value, row) pairs sorted by value then row: the order of equal values is irrelevant to
+      // the splits (they lie between distinct values only) but fixed for reproducibility.
+      sorted.clear();
+      for (const std::size_t i : task.rows) sorted.emplace_back(d.x[i * f + j], i);
+      std::sort(sorted.begin(), sorted.end());
       std::fill(left.begin(), left.end(), std::int64_t{0});
       for (std::size_t q = 1; q < sorted.size(); ++q) {
-        left[static_cast<std::size_t>(d.y[sorted[q - 1]])] += weights[sorted[q - 1]];
-        const double a = d.x[sorted[q - 1] * f + j];
-        const double b = d.x[sorted[q] * f + j];
+        left[static_cast<std::size_t>(d.y[sorted[q - 1].second])] += weights[sorted[q - 1].second];
+        const double a = sorted[q - 1].first;
+        const double b = sorted[q].first;
         if (!(a < b)) continue;
         for (std::size_t c = 0; c < k; ++c) right[c] = total[c] - left[c];
         const SplitScore s = split_score(left, right);
@@ -164,6 +164,7 @@ Tree grow_tree(const Dataset& d, std::span<const std::int64_t> weights, const Tr
     auto& node = t.nodes[static_cast<std::size_t>(id)];
     node.feature = best_feature;
     node.threshold = best_threshold;
+    node.tied = tied;
     Task l, r;
     l.parent = r.parent = id;
     l.is_left = true;
@@ -207,6 +208,18 @@ std::size_t leaf_of(const Tree& t, std::span<const double> x) {
   for (std::size_t steps = 0; steps <= t.nodes.size(); ++steps) {
     const auto& nd = t.nodes[i];
     if (nd.feature < 0) return i;
+    i = static_cast<std::size_t>(x[static_cast<std::size_t>(nd.feature)] <= nd.threshold ? nd.left : nd.right);
+  }
+  throw DomainError("tree: cycle");
+}
+
+bool passes_tied_split(const Tree& t, std::span<const double> x) {
+  require(x.size() == t.features, "tree: the sample has the wrong number of features");
+  std::size_t i = 0;
+  for (std::size_t steps = 0; steps <= t.nodes.size(); ++steps) {
+    const auto& nd = t.nodes[i];
+    if (nd.feature < 0) return false;
+    if (nd.tied) return true;
     i = static_cast<std::size_t>(x[static_cast<std::size_t>(nd.feature)] <= nd.threshold ? nd.left : nd.right);
   }
   throw DomainError("tree: cycle");

@@ -25,6 +25,7 @@ struct Tree {
     int feature = -1;
     double threshold = 0.0;
     int left = -1, right = -1;
+    bool tied = false;  ///< another candidate split scored exactly as this one
   };
   std::size_t classes = 0, features = 0;
   std::vector<Node> nodes;
@@ -75,6 +76,9 @@ struct TreeParams {
 
 /// Index of the leaf x reaches. Spec: cin2021.eq6. Pre: x.size() == features.
 [[nodiscard]] std::size_t leaf_of(const Tree& t, std::span<const double> x);
+/// True iff the path of x crosses a node whose split was chosen among exactly equal scores
+/// (where another implementation may legitimately split differently). Spec: cin2021.gini.
+[[nodiscard]] bool passes_tied_split(const Tree& t, std::span<const double> x);
 /// The tree's class: first largest count of the leaf. Spec: cin2021.eq6.
 [[nodiscard]] int predict(const Tree& t, std::span<const double> x);
 
