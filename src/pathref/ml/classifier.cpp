@@ -299,8 +299,12 @@ Model model_from_json(const Json& j, const std::string& source) {
         std::int64_t n = 0;
         for (const auto c : g.count) { need(c >= 0, "GNB: counts >= 0"); n += c; }
         need(n > 0, "GNB: no training rows");
-        for (const double v : g.var) need(std::isfinite(v) && v > 0.0, "GNB: variances > 0");
-        for (const double v : g.mean) need(std::isfinite(v), "GNB: finite means");
+        for (std::size_t c = 0; c < k; ++c)
+          for (std::size_t j = 0; j < f; ++j)
+            if (g.count[c] > 0) {
+              need(std::isfinite(g.var[c * f + j]) && g.var[c * f + j] > 0.0, "GNB: variances > 0");
+              need(std::isfinite(g.mean[c * f + j]), "GNB: finite means");
+            }
         g.log_prior.assign(k, -INFINITY);
         for (std::size_t c = 0; c < k; ++c)
           if (g.count[c] > 0) g.log_prior[c] = std::log(static_cast<double>(g.count[c]) / static_cast<double>(n));
