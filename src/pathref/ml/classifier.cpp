@@ -300,10 +300,10 @@ Model model_from_json(const Json& j, const std::string& source) {
         for (const auto c : g.count) { need(c >= 0, "GNB: counts >= 0"); n += c; }
         need(n > 0, "GNB: no training rows");
         for (std::size_t c = 0; c < k; ++c)
-          for (std::size_t j = 0; j < f; ++j)
+          for (std::size_t q = 0; q < f; ++q)
             if (g.count[c] > 0) {
-              need(std::isfinite(g.var[c * f + j]) && g.var[c * f + j] > 0.0, "GNB: variances > 0");
-              need(std::isfinite(g.mean[c * f + j]), "GNB: finite means");
+              need(std::isfinite(g.var[c * f + q]) && g.var[c * f + q] > 0.0, "GNB: variances > 0");
+              need(std::isfinite(g.mean[c * f + q]), "GNB: finite means");
             }
         g.log_prior.assign(k, -INFINITY);
         for (std::size_t c = 0; c < k; ++c)

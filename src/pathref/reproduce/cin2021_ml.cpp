@@ -172,16 +172,19 @@ Json run_cin2021_ml(const Cin2021MlConfig& cfg) {
       } else {
         const double acc = results[pn.main_variant]["tenfold"].at("accuracy").get<double>();
         c.ours = fixed(100 * acc, 3);
-        c.rule = "holds iff pathref's 10-fold accuracy (folds identical to StratifiedKFold(10)) prints as the paper's number";
-        c.verdict = matches_printed(100 * acc, printed) ? Verdict::holds : Verdict::fails;
+        c.rule = "holds iff pathref's 10-fold accuracy (folds identical to StratifiedKFold(10)) is within one unit of the "
+                 "paper's last printed digit (|diff| < 0.1 pp: the paper writes 'about', and rounding or truncation both print so)";
+        c.verdict = std::abs(100 * acc - paper_pct) < 0.1 ? Verdict::holds : Verdict::fails;
+        if (!matches_printed(100 * acc, printed))
+          c.note = fmt::format("rounded, pathref's value prints as {}", fixed(100 * acc, 1));
         if (std::string(pn.main_variant) == "svm") {
           const double a2 = results["svm-auto"]["tenfold"].at("accuracy").get<double>();
-          c.note = fmt::format("reading-dependent: with gamma = auto (1/d, scikit-learn's default before 0.22) pathref gives {} % ({})",
-                               fixed(100 * a2, 3), matches_printed(100 * a2, printed) ? "holds" : "does not hold");
+          c.note += fmt::format("; reading-dependent: with gamma = auto (1/d, scikit-learn's default before 0.22) pathref gives {} % ({})",
+                                fixed(100 * a2, 3), std::abs(100 * a2 - paper_pct) < 0.1 ? "holds" : "does not hold");
         }
         if (std::string(pn.main_variant) == "rf") {
           const double a2 = results["rf-10"]["tenfold"].at("accuracy").get<double>();
-          c.note = fmt::format("with 10 trees (scikit-learn's default before 0.22) {} %", fixed(100 * a2, 3));
+          c.note += fmt::format("; with 10 trees (scikit-learn's default before 0.22) {} %", fixed(100 * a2, 3));
         }
       }
       claims.push_back(claim_json(c));
@@ -299,9 +302,11 @@ std::string cin2021_ml_markdown(const Json& doc, const std::string& json_name) {
         "computed or copied from a `test_size=0.7` call; which one the figures came from cannot be settled from the text. "
         "The verdicts above use the swapped reading and mark it.\n";
   md += "- **scikit-learn's version**: the tenfold SVM number 91.5 % is reproduced exactly by `SVC(gamma='auto')` "
-        "(γ = 1/d, the default before scikit-learn 0.22), not by today's `gamma='scale'` (91.9 %); before 0.22 the "
-        "random forest's default was 10 trees. Every other tenfold number (KNN 93.2, GNB 88.4, MNB 58.3, RF 99.8) is "
-        "reproduced to the printed digit by pathref and scikit-learn alike.\n\n";
+        "(γ = 1/d, the default before scikit-learn 0.22: 91.477 %), not by today's `gamma='scale'` (91.899 %); before 0.22 "
+        "the random forest's default was 10 trees. KNN 93.2 and GNB 88.4 are reproduced to the printed digit (93.218, "
+        "88.416) by pathref and scikit-learn alike (identical predictions); MNB's 58.376 % prints as 58.4, so the "
+        "paper's 58.3 is truncated, or from another version; RF 99.8 is matched by pathref (99.762) and scikit-learn "
+        "(99.817) with different random streams.\n\n";
   md += "## Figures\n\n![hold-out accuracies](cin2021-ml/fig3-holdout.svg)\n\n![tenfold accuracies](cin2021-ml/fig4-tenfold.svg)\n\n";
   md += md_provenance(doc.at("provenance"), json_name);
   return md;
