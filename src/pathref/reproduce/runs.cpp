@@ -130,6 +130,13 @@ Json run_to_json(const RunRecord& r) {
   if (r.extra.is_object() && r.extra.contains("phase")) j["phase"] = r.extra.at("phase");
   if (r.extra.is_object() && r.extra.contains("failure") && r.extra.at("failure").is_string())
     j["failure"] = r.extra.at("failure");
+  // The GA population the planner actually built (GA-based planners, spec/shi2022-ga.md "Population").
+  if (r.extra.is_object()) {
+    Json pop = Json::object();
+    for (const char* k : {"population_size", "population_init", "population_aco", "init_built", "init_exhausted", "init_chains"})
+      if (r.extra.contains(k)) pop[k] = r.extra.at(k);
+    if (!pop.empty()) j["population"] = pop;
+  }
   return j;
 }
 
