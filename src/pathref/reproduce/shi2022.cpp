@@ -344,8 +344,9 @@ std::vector<Claim> paper_claims(const Json& results, const JudgeContext& jc) {
   // Claims that read the traditional hybrid rest on its reconstruction (spec/shi2022-ga.md).
   for (Claim& c : claims)
     if (c.id.rfind("T5", 0) != 0 && (c.text.find("traditional hybrid") != std::string::npos))
-      c.depends_on.push_back("the traditional hybrid is pathref's reconstruction of Bao et al. from Shi's description "
-                             "(spec/shi2022-ga.md, shi2022.plan.hybrid)");
+      c.depends_on.push_back("the traditional hybrid is pathref's reconstruction of Bao et al. from Shi's description, "
+                             "its colony with the goal-blind η = 1/d_ij (spec/shi2022-ga.md, shi2022.plan.hybrid; "
+                             "the goal-directed η: reading `eta`)");
   if (results.contains("shi6x6"))
     table_claims(claims, results.at("shi6x6"), "Table 5", false,
                  "the paper's 6×6 obstacle layout is not published; pathref's shi6x6 is a reconstruction "
@@ -413,6 +414,11 @@ const std::vector<ShiReading>& shi2022_readings() {
        "(shi2022.plan.ga, Reading \"The result\"; default `fitness`)",
        {"hybrid-ga-aco", "iha"},
        Json{{"result_by", "length"}}},
+      {"eta", "e",
+       "the traditional hybrid's colony with the goal-directed η = 1/(d_ij + d_jE) (the η of Shi's IACO) instead of "
+       "the goal-blind η = 1/d_ij of the plain colony it is reconstructed with (shi2022.plan.hybrid)",
+       {"hybrid-ga-aco"},
+       Json{{"aco_eta", "goal_directed"}}},
       {"invlen", "f",
        "IHA with `fitness = inverse_length` (Eq. 10) instead of the weighted Eq. 14–18, whose sums over nodes "
        "reward longer paths (shi2022.eq14, Note)",
