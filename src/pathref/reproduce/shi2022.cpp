@@ -147,11 +147,6 @@ std::string unavailable_note(const Json& results, std::initializer_list<std::str
   return note;
 }
 
-std::string percent_change(double reduction) {
-  if (reduction > 0.0) return "−" + fixed(reduction, 1) + " %";
-  if (reduction < 0.0) return "+" + fixed(-reduction, 1) + " %";
-  return fixed(0.0, 1) + " %";
-}
 
 Json map_json(const ProtocolMap& m, grid::Cell start, grid::Cell goal) {
   std::int64_t blocked = 0;
@@ -355,7 +350,6 @@ std::vector<Claim> paper_claims(const Json& results, const JudgeContext& jc) {
   return claims;
 }
 
-void append(std::vector<Claim>& to, const std::vector<Claim>& from) { to.insert(to.end(), from.begin(), from.end()); }
 
 /// The claims that read a planner of `r`, judged again on its runs under the reading (spec
 /// reproduce.shi2022.readings): `results` with each planner of r replaced by its "PLANNER@KEY"
