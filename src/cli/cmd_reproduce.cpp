@@ -118,7 +118,7 @@ std::string build_type() {
 
 void write_file(const std::filesystem::path& p, const std::string& text) {
   std::error_code ec;
-  std::filesystem::create_directories(p.parent_path(), ec);
+  if (!p.parent_path().empty()) std::filesystem::create_directories(p.parent_path(), ec);
   std::ofstream out(p, std::ios::binary);
   out << text;
   out.close();

@@ -5,7 +5,7 @@
 # and is skipped with a message when they are absent.
 # Usage: bash tests/cli/reproduce.sh path/to/pathref   (from the repository root)
 set -euo pipefail
-pathref=$1
+pathref=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")  # absolute: some steps run in another directory
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 
 expect_exit() {

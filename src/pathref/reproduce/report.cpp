@@ -328,7 +328,7 @@ std::string md_claims(const Json& claims) {
   return s;
 }
 
-std::string md_verdict_summary(const Json& claims) {
+std::string md_verdict_summary(const Json& claims, bool checks) {
   constexpr std::size_t K = 5;
   std::vector<std::string> ids[K];
   const char* names[K] = {"holds", "does not hold", "not significant", "inconclusive", "cannot be tested"};
@@ -345,9 +345,9 @@ std::string md_verdict_summary(const Json& claims) {
     if (c.value("changed", false)) changed.push_back(id);
   }
   std::string s = fmt::format(
-      "{} claims (verdicts on the protocol's n runs): {} hold, {} do not hold, {} not significant, {} inconclusive, "
-      "{} cannot be tested.\n\n",
-      claims.size(), ids[0].size(), ids[1].size(), ids[2].size(), ids[3].size(), ids[4].size());
+      "{} {}: {} hold, {} do not hold, {} not significant, {} inconclusive, {} cannot be tested.\n\n", claims.size(),
+      checks ? "checks" : "claims (verdicts on the protocol's n runs)", ids[0].size(), ids[1].size(), ids[2].size(),
+      ids[3].size(), ids[4].size());
   for (std::size_t k = 0; k < K; ++k) {
     std::string list;
     for (const auto& id : ids[k]) list += (list.empty() ? "" : ", ") + id;

@@ -118,7 +118,8 @@ void comparison_claim(Claim& c, std::span<const double> a_n, std::span<const dou
 /// "N claims: H hold, F do not hold, S not significant, I inconclusive, U cannot be tested." and
 /// one line per verdict listing the ids (the verdicts at n; then the claims whose verdict changes
 /// at 2n).
-[[nodiscard]] std::string md_verdict_summary(const Json& claims);
+/// With `checks` = true the same for pathref's own checks ("N checks: ...", no n/2n wording).
+[[nodiscard]] std::string md_verdict_summary(const Json& claims, bool checks = false);
 
 /// The provenance section of the markdown.
 [[nodiscard]] std::string md_provenance(const Json& provenance, const std::string& out_name);

@@ -834,7 +834,10 @@ std::string shi2022_markdown(const Json& doc, const std::string& figure_dir, con
        "(the maps' optima, valid paths) are listed apart in [pathref's checks](#pathrefs-checks) and are not paper "
        "claims. A † marks a verdict that rests on a reconstructed or chosen reading; the claim that judges it under "
        "the alternative is named beside it.\n\n";
-  if (doc.contains("checks")) s += "pathref's checks: " + md_verdict_summary(doc.at("checks")).substr(0, md_verdict_summary(doc.at("checks")).find('\n')) + "\n\n";
+  if (doc.contains("checks")) {
+    const std::string cs = md_verdict_summary(doc.at("checks"), true);
+    s += "pathref's own " + cs.substr(0, cs.find('\n')) + "\n\n";
+  }
   s += "## Protocol\n\n";
   const bool paper = proto.value("orientation", "paper") == "paper";
   s += fmt::format("- maps: simple = `{}`, complex = `{}` (0/1 matrices); start = the first cell of the file's first "
