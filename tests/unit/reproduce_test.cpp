@@ -280,7 +280,7 @@ TEST_CASE("reproduce.markdown: verdict summary lists the ids per verdict", "[rep
   CHECK(ej["change_note"].get<std::string>().find("more runs narrowed") != std::string::npos);
   const std::string te = reproduce::md_claims(reproduce::Json::array({ej}));
   CHECK(te.find("| E.5 † | t | s | 29.8 | x | inconclusive — pathref better | **changed:** does not hold — pathref "
-                "better | r; † rests on: reading k (alternative: E.5k) |") != std::string::npos);
+                "better | r; † depends on reading k (alternative: E.5k) |") != std::string::npos);
 }
 
 TEST_CASE("reproduce.shi2022.readings: planners re-run under each reading, claims re-judged", "[reproduce]") {

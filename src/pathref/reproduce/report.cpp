@@ -320,7 +320,7 @@ std::string md_claims(const Json& claims) {
       id += " †";
       std::string d;
       for (const Json& x : deps) d += (d.empty() ? "" : "; ") + x.get<std::string>();
-      rule += (rule.empty() ? "" : "; ") + std::string("† rests on: ") + d;
+      rule += (rule.empty() ? "" : "; ") + std::string("† depends on ") + d;
     }
     s += md_row({id, c.at("text").get<std::string>(), c.at("source").get<std::string>(),
                  c.at("paper").get<std::string>(), c.at("ours").get<std::string>(), verdict, at2, rule});
