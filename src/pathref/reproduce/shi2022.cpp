@@ -339,8 +339,8 @@ std::vector<Claim> paper_claims(const Json& results, const JudgeContext& jc) {
   // Claims that read the traditional hybrid rest on its reconstruction (spec/shi2022-ga.md).
   for (Claim& c : claims)
     if (c.id.rfind("T5", 0) != 0 && (c.text.find("traditional hybrid") != std::string::npos))
-      c.depends_on.push_back("the traditional hybrid is pathref's reconstruction of Bao et al. from Shi's description, "
-                             "its colony with the goal-blind η = 1/d_ij (spec/shi2022-ga.md, shi2022.plan.hybrid; "
+      c.depends_on.push_back("pathref's reconstruction of the traditional hybrid (Bao et al., from Shi's description), "
+                             "whose colony uses the goal-blind η = 1/d_ij (spec/shi2022-ga.md, shi2022.plan.hybrid; "
                              "the goal-directed η: reading `eta`)");
   if (results.contains("shi6x6"))
     table_claims(claims, results.at("shi6x6"), "Table 5", false,
