@@ -27,6 +27,7 @@
 #include "pathref/reproduce/cin2021.hpp"
 #include "pathref/reproduce/han.hpp"
 #include "pathref/reproduce/runs.hpp"
+#include "pathref/reproduce/sensors2023.hpp"
 #include "pathref/reproduce/shi2022.hpp"
 
 namespace pathref::cli {
@@ -352,6 +353,23 @@ int run_cin2021_cmd(const ReproduceOptions& o) {
   });
 }
 
+int run_sensors2023_cmd(const ReproduceOptions& o) {
+  reproduce::Sensors2023Config cfg;
+  cfg.maps = o.maps_per_edge.empty() ? (o.quick ? 4 : 30) : parse_int(o.maps_per_edge, "--maps", 1, 10000);
+  cfg.seed = static_cast<std::uint32_t>(parse_int(o.seed, "--seed", 0, 4294967295LL));
+  cfg.quick = o.quick;
+  if (static_cast<std::uint64_t>(cfg.seed) + 100000ULL > 4294967295ULL)
+    throw UsageError("--seed must leave room for the random maps' seeds (seed + 100000 <= 4294967295)");
+  std::string cmd = fmt::format("pathref reproduce sensors2023 --maps {} --seed {} --out-dir {}", cfg.maps, cfg.seed, o.out_dir);
+  if (o.quick) cmd += " --quick";
+  cfg.provenance = provenance(cmd);
+  cfg.progress = progress_printer();
+  const Json doc = reproduce::run_sensors2023(cfg);
+  return write_outputs(doc, o.out_dir, "sensors2023",
+                       reproduce::sensors2023_markdown(doc, "sensors2023", "sensors2023/reproduce.json"),
+                       reproduce::sensors2023_figures(doc));
+}
+
 void add_common(CLI::App* cmd, ReproduceOptions& o) {
   cmd->add_option("--runs", o.runs, "runs per stochastic planner and map (default 50; 3 with --quick)")->type_name("N");
   cmd->add_option("--seed", o.seed, "first seed; run r uses seed + r (spec/reproduce.md)")
@@ -383,6 +401,7 @@ void add_reproduce_command(CLI::App& app, Action& run) {
   static ReproduceOptions shi;
   static ReproduceOptions han;
   static ReproduceOptions cin;
+  static ReproduceOptions s23;
   auto* cmd = app.add_subcommand("reproduce", "Run a paper's experiments and write the report, JSON and figures "
                                               "(spec/reproduce.md)");
   cmd->require_subcommand(1);
@@ -440,6 +459,14 @@ void add_reproduce_command(CLI::App& app, Action& run) {
       return 0;
     };
   });
+  auto* k = cmd->add_subcommand("sensors2023",
+                                "Sensors 2023 (kinematic A* + following DWA): rebuilt 21x21 scene and random maps, Tables 2-4 "
+                                "(spec/sensors2023-dwa.md)");
+  k->add_option("--maps", s23.maps_per_edge, "random 21x21 maps (default 30; 4 with --quick)")->type_name("M");
+  k->add_option("--seed", s23.seed, "first random-map seed")->type_name("S")->capture_default_str();
+  k->add_option("--out-dir", s23.out_dir, "directory of the report, its JSON and figures")->type_name("DIR")->capture_default_str();
+  k->add_flag("--quick", s23.quick, "4 random maps: a smoke test");
+  k->callback([&run] { run = [] { return run_sensors2023_cmd(s23); }; });
 }
 
 }  // namespace pathref::cli
