@@ -25,7 +25,7 @@ const grid::Grid& scene() {
 
 void BM_DwaControlStep(benchmark::State& state) {
   const dwa::DwaParams prm;
-  const std::vector<dwa::Disc> discs{dwa::Disc{dwa::Point{11.5, 0.5}, 0.4}};
+  const std::vector<dwa::Disc> discs{dwa::Disc{dwa::Point{11.5, 0.5}, 0.4, {}}};
   const dwa::Obstacles obs{&scene(), {}, discs};
   std::int64_t candidates = 0;
   for (auto _ : state) {

@@ -160,7 +160,7 @@ TEST_CASE("prop_dwa_step_clearance_below_endpoints") {
     const double radius = 0.3;
     const double s = step_clearance(a, b, 0.0, 1.0, radius, g, {}, ms);
     for (const auto& [pt, t] : {std::pair{a, 0.0}, std::pair{b, 1.0}}) {
-      const std::vector<Disc> d{Disc{obstacle_position(m.waypoints, t), m.r}};
+      const std::vector<Disc> d{Disc{obstacle_position(m.waypoints, t), m.r, {}}};
       RC_ASSERT(s <= point_clearance(pt, Obstacles{&g, {}, d}, radius, 10.0) + 1e-12);
     }
   });
@@ -207,6 +207,51 @@ TEST_CASE("prop_fused_run_ends_with_one_outcome") {
       const double dx = r.samples.back().pose.x - (static_cast<double>(W - 1) + 0.5);
       const double dy = r.samples.back().pose.y - 3.5;
       RC_ASSERT(std::sqrt((dx * dx) + (dy * dy)) <= s.goal_reach);
+    }
+  });
+}
+
+TEST_CASE("prop_dwa_step_is_composition") {
+  rc::prop("control_step equals Eq. 9-14 composed literally (predict, clearance, heading, Eq. 12, Eq. 13)", [] {
+    const grid::Grid g = *gen_map();
+    const double W = static_cast<double>(g.width()), H = static_cast<double>(g.height());
+    const Pose p{*gen_real(0, W), *gen_real(0, H), *gen_real(-4, 4)};
+    DwaParams prm;
+    prm.horizon = 1.0;
+    prm.v_res = 0.02;
+    prm.w_res = 0.05;
+    prm.motion_order = *rc::gen::element(MotionOrder::heading_last, MotionOrder::heading_first);
+    prm.evaluation = *rc::gen::element(Evaluation::normalised, Evaluation::cost);
+    prm.clearance_at = *rc::gen::element(ClearanceAt::trajectory, ClearanceAt::end);
+    const double v_c = *gen_real(0.0, 1.0);
+    const double w_c = *gen_real(-0.6, 0.6);
+    const Point target{*gen_real(0, W), *gen_real(0, H)};
+    const std::vector<Disc> discs{Disc{Point{*gen_real(0, W), *gen_real(0, H)}, 0.3, Point{*gen_real(-1, 1), *gen_real(-1, 1)}}};
+    const Obstacles obs{&g, {}, discs};
+    const StepResult r = control_step(p, v_c, w_c, target, obs, prm);
+    const Window win = dynamic_window(v_c, w_c, prm.limits, prm.dt);
+    const auto vs = axis_samples(win.v_lo, win.v_hi, prm.v_res, prm.window_upper);
+    const auto ws = axis_samples(win.w_lo, win.w_hi, prm.w_res, prm.window_upper);
+    std::vector<Terms> ts;
+    for (const double v : vs)
+      for (const double w : ws) {
+        const auto traj = predict(p, v, w, prm.dt, prm.horizon, prm.motion_order);
+        const double c = trajectory_clearance(traj, obs, prm.radius, prm.clearance_cap, prm.clearance_at, prm.dt);
+        const Heading h = heading_term(traj.back(), target, prm.heading_wrap);
+        Terms t{h.heading_deg, h.abs_dtheta, c, v, false};
+        t.valid = c >= 0.0 && admissible(v, w, c, prm.limits.dec_v, prm.limits.dec_w, prm.admissible);
+        if (!t.valid) t.clearance = std::max(0.0, c);
+        ts.push_back(t);
+      }
+    const Choice ch = evaluate(ts, prm.weights, prm.evaluation, prm.limits.v_max);
+    RC_ASSERT(r.best == ch.best);
+    RC_ASSERT(r.candidates == static_cast<std::int64_t>(ts.size()));
+    if (ch.best >= 0) {
+      RC_ASSERT(r.v == vs[static_cast<std::size_t>(ch.best) / ws.size()]);
+      RC_ASSERT(r.w == ws[static_cast<std::size_t>(ch.best) % ws.size()]);
+      RC_ASSERT(r.score == ch.scores[static_cast<std::size_t>(ch.best)]);
+    } else {
+      RC_ASSERT(r.braked);
     }
   });
 }

@@ -84,7 +84,9 @@ TEST_CASE("sensors2023.eq13: normalised maximisation and cost minimisation") {
   t[0] = Terms{90.0, 1.5707963267948966, 1.0, 0.0, true};
   t[1] = Terms{180.0, 0.0, 0.5, 0.5, true};
   t[2] = Terms{180.0, 0.0, 1.0, 1.0, false};  // invalid: ignored
-  const Choice c = evaluate(t, Weights{}, Evaluation::normalised, 1.0);
+  Weights w05;
+  w05.alpha = 0.05;
+  const Choice c = evaluate(t, w05, Evaluation::normalised, 1.0);
   // H = 270, D = 1.5, V = 0.5; G0 = 0.05/3 + 0.2*(2/3) + 0; G1 = 0.05*(2/3) + 0.2/3 + 0.1
   CHECK(c.scores[0] == Approx((0.05 / 3.0) + (0.2 * 2.0 / 3.0)));
   CHECK(c.scores[1] == Approx((0.05 * 2.0 / 3.0) + (0.2 / 3.0) + 0.1));
@@ -124,7 +126,7 @@ TEST_CASE("sensors2023.dwa.clearance: cells, temporary cells, discs, cap") {
   CHECK(point_clearance(Point{1.5, 0.75}, obs, 0.3, 1.0) == Approx(-0.05));
   CHECK(point_clearance(Point{1.5, 1.5}, obs, 0.3, 1.0) == -0.3);
   const std::vector<grid::Cell> temp{grid::Cell{0, 0}};
-  const std::vector<Disc> discs{Disc{Point{2.5, 2.5}, 0.2}};
+  const std::vector<Disc> discs{Disc{Point{2.5, 2.5}, 0.2, {}}};
   const grid::Grid& o = open5();
   const Obstacles obs2{&o, temp, discs};
   CHECK(point_clearance(Point{2.5, 1.5}, obs2, 0.3, 10.0) == Approx(0.5));  // disc: 1 - 0.2 - 0.3
@@ -132,6 +134,11 @@ TEST_CASE("sensors2023.dwa.clearance: cells, temporary cells, discs, cap") {
   const std::vector<Pose> tr{Pose{2.5, 1.5, 0.0}, Pose{2.5, 2.5, 0.0}};
   CHECK(trajectory_clearance(tr, obs2, 0.3, 10.0) < 0.0);
   CHECK(trajectory_clearance(std::vector<Pose>{tr[0]}, obs2, 0.3, 10.0, ClearanceAt::end) == Approx(0.5));
+  // a disc predicted tau seconds ahead along its velocity (obstacle_prediction = linear)
+  const std::vector<Disc> moving{Disc{Point{2.5, 4.5}, 0.2, Point{0.0, -1.0}}};
+  CHECK(point_clearance(Point{2.5, 1.5}, Obstacles{&o, {}, moving}, 0.3, 10.0, 2.0) == Approx(0.5));
+  CHECK(trajectory_clearance(tr, Obstacles{&o, {}, moving}, 0.3, 10.0, ClearanceAt::trajectory, 1.0) ==
+        Approx(-0.5));  // P_1 at tau 1 (disc at y 3.5: 1.5), P_2 at tau 2 (disc at y 2.5, on it: -0.5)
   CHECK_THROWS_AS(point_clearance(Point{0.0, 0.0}, obs, 0.3, 0.0), DomainError);
 }
 

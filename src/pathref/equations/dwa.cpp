@@ -255,12 +255,12 @@ void require_obstacles(const Obstacles& obs, double radius, double cap) {
   require(finite(cap) && cap > 0.0, "sensors2023.dwa.clearance: cap must be finite and > 0");
   require(finite(radius) && radius >= 0.0, "sensors2023.dwa.clearance: radius must be finite and >= 0");
   for (const Disc& d : obs.discs)
-    require(finite(d.c.x) && finite(d.c.y) && finite(d.r) && d.r >= 0.0,
+    require(finite(d.c.x) && finite(d.c.y) && finite(d.r) && d.r >= 0.0 && finite(d.vel.x) && finite(d.vel.y),
             "sensors2023.dwa.clearance: discs must be finite with radius >= 0");
 }
 
 // point_clearance without the checks (the caller checked the obstacles once).
-double clearance_unchecked(Point p, const Obstacles& obs, double radius, double cap) {
+double clearance_unchecked(Point p, const Obstacles& obs, double radius, double cap, double tau) {
   const double reach = cap + radius;
   const auto x0 = static_cast<std::int64_t>(std::floor(p.x - reach));
   const auto x1 = static_cast<std::int64_t>(std::floor(p.x + reach));
@@ -276,8 +276,8 @@ double clearance_unchecked(Point p, const Obstacles& obs, double radius, double 
     }
   for (const grid::Cell& c : obs.temporary) m = std::min(m, cell_surface_distance(p, c));
   for (const Disc& d : obs.discs) {
-    const double dx = p.x - d.c.x;
-    const double dy = p.y - d.c.y;
+    const double dx = p.x - (d.c.x + (tau * d.vel.x));
+    const double dy = p.y - (d.c.y + (tau * d.vel.y));
     m = std::min(m, std::sqrt((dx * dx) + (dy * dy)) - d.r);
   }
   return std::min(cap, m - radius);
@@ -285,20 +285,25 @@ double clearance_unchecked(Point p, const Obstacles& obs, double radius, double 
 
 }  // namespace
 
-double point_clearance(Point p, const Obstacles& obs, double radius, double cap) {
+double point_clearance(Point p, const Obstacles& obs, double radius, double cap, double tau) {
   require_point(p, "sensors2023.dwa.clearance");
+  require(finite(tau), "sensors2023.dwa.clearance: tau must be finite");
   require_obstacles(obs, radius, cap);
-  return clearance_unchecked(p, obs, radius, cap);
+  return clearance_unchecked(p, obs, radius, cap, tau);
 }
 
 double trajectory_clearance(std::span<const Pose> traj, const Obstacles& obs, double radius, double cap,
-                            ClearanceAt at) {
+                            ClearanceAt at, double dt) {
   require(!traj.empty(), "sensors2023.dwa.clearance: empty trajectory");
+  require(finite(dt) && dt >= 0.0, "sensors2023.dwa.clearance: dt must be finite and >= 0");
   require_obstacles(obs, radius, cap);
   for (const Pose& p : traj) require_point(Point{p.x, p.y}, "sensors2023.dwa.clearance");
-  if (at == ClearanceAt::end) return clearance_unchecked(Point{traj.back().x, traj.back().y}, obs, radius, cap);
+  const auto n = traj.size();
+  if (at == ClearanceAt::end)
+    return clearance_unchecked(Point{traj.back().x, traj.back().y}, obs, radius, cap, static_cast<double>(n) * dt);
   double m = inf;
-  for (const Pose& p : traj) m = std::min(m, clearance_unchecked(Point{p.x, p.y}, obs, radius, cap));
+  for (std::size_t j = 0; j < n; ++j)
+    m = std::min(m, clearance_unchecked(Point{traj[j].x, traj[j].y}, obs, radius, cap, static_cast<double>(j + 1) * dt));
   return m;
 }
 
@@ -316,16 +321,36 @@ StepResult control_step(Pose p, double v_c, double w_c, Point target, const Obst
   require_point(target, "sensors2023.dwa.step target");
   std::vector<Terms> terms;
   terms.reserve(vs.size() * ws.size());
+  // The headings theta_j of a trajectory depend on w only, so their cosines and sines are computed
+  // once per w and shared by every v (the same doubles motion_step computes: identical results).
+  const auto nn = static_cast<std::size_t>(n);
+  std::vector<double> cs(ws.size() * nn), sn(ws.size() * nn), th_end(ws.size());
+  for (std::size_t iw = 0; iw < ws.size(); ++iw) {
+    double th = p.theta;
+    for (std::size_t j = 0; j < nn; ++j) {
+      const double next = th + (ws[iw] * prm.dt);
+      const double use = prm.motion_order == MotionOrder::heading_last ? th : next;
+      cs[(iw * nn) + j] = std::cos(use);
+      sn[(iw * nn) + j] = std::sin(use);
+      th = next;
+    }
+    th_end[iw] = th;
+  }
   for (const double v : vs)
-    for (const double w : ws) {
-      // predict + trajectory_clearance + heading_term, fused (same operations, no allocation).
+    for (std::size_t iw = 0; iw < ws.size(); ++iw) {
+      const double w = ws[iw];
+      // predict + trajectory_clearance + heading_term, fused (same operations as motion_step, no allocation).
       Pose q = p;
       double clr = inf;
-      for (std::int64_t j = 0; j < n; ++j) {
-        q = motion_step(q, v, w, prm.dt, prm.motion_order);
+      const double ds = v * prm.dt;
+      for (std::size_t j = 0; j < nn; ++j) {
+        q.x = q.x + (ds * cs[(iw * nn) + j]);
+        q.y = q.y + (ds * sn[(iw * nn) + j]);
+        if (j + 1 == nn) q.theta = th_end[iw];
         require_point(Point{q.x, q.y}, "sensors2023.dwa.step");
-        if (prm.clearance_at == ClearanceAt::trajectory || j == n - 1)
-          clr = std::min(clr, clearance_unchecked(Point{q.x, q.y}, obs, prm.radius, prm.clearance_cap));
+        if (prm.clearance_at == ClearanceAt::trajectory || j + 1 == nn)
+          clr = std::min(clr, clearance_unchecked(Point{q.x, q.y}, obs, prm.radius, prm.clearance_cap,
+                                                  prm.predict_movers ? static_cast<double>(j + 1) * prm.dt : 0.0));
       }
       Terms t;
       const Heading h = heading_term(q, target, prm.heading_wrap);

@@ -141,7 +141,7 @@ struct Heading {
 
 // ---------------------------------------------------------------- Eq. 13
 struct Weights {
-  double alpha = 0.05;  ///< heading (normalised)
+  double alpha = 0.2;   ///< heading (normalised); 0.2, not the MATLAB demo's 0.05 (spec: Project defaults)
   double beta = 0.2;    ///< clearance
   double gamma = 0.1;   ///< velocity
   double k_heading = 0.15;   ///< cost: |dtheta| (rad)
@@ -173,10 +173,11 @@ struct Choice {
                               double v_max);
 
 // ---------------------------------------------------------------- clearance
-/// A moving obstacle's disc at some time.
+/// A moving obstacle's disc at some time, with its estimated velocity (m/s; zero: static).
 struct Disc {
   Point c;
   double r = 0.0;
+  Point vel;
 };
 
 /// What a control step sees: the map (cells outside count as blocked), the present temporary
@@ -191,15 +192,18 @@ struct Obstacles {
 /// dx = max(c.x - p.x, 0, p.x - (c.x + 1)). Source: pathref. Spec: sensors2023.dwa.clearance.
 [[nodiscard]] double cell_surface_distance(Point p, grid::Cell c) noexcept;
 
-/// Point clearance min(cap, min_o surf(p, o) - radius), examining cells within cap + radius.
-/// Source: pathref. Spec: sensors2023.dwa.clearance. Pre: finite p; cap > 0 finite; radius >= 0;
-/// obs.grid set; disc radii >= 0 (DomainError). Golden: golden/sensors2023-dwa/sensors2023.dwa.clearance.json
-[[nodiscard]] double point_clearance(Point p, const Obstacles& obs, double radius, double cap);
+/// Point clearance min(cap, min_o surf(p, o) - radius), examining cells within cap + radius; each
+/// disc taken at c + (tau vel) (its predicted position tau seconds ahead).
+/// Source: pathref. Spec: sensors2023.dwa.clearance. Pre: finite p, tau; cap > 0 finite; radius >= 0;
+/// obs.grid set; disc radii >= 0, finite velocities (DomainError).
+/// Golden: golden/sensors2023-dwa/sensors2023.dwa.clearance.json
+[[nodiscard]] double point_clearance(Point p, const Obstacles& obs, double radius, double cap, double tau = 0.0);
 
-/// Trajectory clearance: min_j point_clearance(P_j) over the trajectory (or of its last pose).
-/// Source: pathref. Spec: sensors2023.dwa.clearance. Pre: traj non-empty; as point_clearance.
+/// Trajectory clearance: min_j point_clearance(P_j, tau = (j+1) dt) over traj = P_1 ... P_N (or of
+/// P_N alone, tau = N dt); dt = 0 keeps every disc where it is.
+/// Source: pathref. Spec: sensors2023.dwa.clearance. Pre: traj non-empty; dt >= 0; as point_clearance.
 [[nodiscard]] double trajectory_clearance(std::span<const Pose> traj, const Obstacles& obs, double radius,
-                                          double cap, ClearanceAt at = ClearanceAt::trajectory);
+                                          double cap, ClearanceAt at = ClearanceAt::trajectory, double dt = 0.0);
 
 // ---------------------------------------------------------------- control step
 struct DwaParams {
@@ -217,6 +221,7 @@ struct DwaParams {
   WindowUpper window_upper = WindowUpper::include;
   Admissible admissible = Admissible::both;
   MotionOrder motion_order = MotionOrder::heading_last;
+  bool predict_movers = true;  ///< obstacle_prediction = linear (default) | static
 };
 
 struct StepResult {

@@ -1,6 +1,7 @@
 // JSON adapters for the sensors2023 DWA rules (spec/sensors2023-dwa.md): Eq. 9-14, the clearance,
 // the control step, key-node following, obstacles, the collision test, turns and the fused run.
 #include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -20,8 +21,23 @@ double opt_num(const Json& in, const char* key, double fallback) {
   return in.contains(key) ? arg_number(in, key) : fallback;
 }
 
+/// Numbers where an element may also be "inf", "-inf" or "nan" (to reach the DomainErrors).
+std::vector<double> numbers_ext(const Json& in, const char* key) {
+  const Json& a = arg(in, key);
+  if (!a.is_array()) throw UsageError(std::string("input '") + key + "' must be an array");
+  std::vector<double> out;
+  for (const Json& e : a) {
+    if (e.is_number()) out.push_back(e.get<double>());
+    else if (e == "inf") out.push_back(std::numeric_limits<double>::infinity());
+    else if (e == "-inf") out.push_back(-std::numeric_limits<double>::infinity());
+    else if (e == "nan") out.push_back(std::numeric_limits<double>::quiet_NaN());
+    else throw UsageError(std::string("input '") + key + "' must hold numbers");
+  }
+  return out;
+}
+
 Pose pose_arg(const Json& in, const char* key) {
-  const std::vector<double> v = arg_numbers(in, key);
+  const std::vector<double> v = numbers_ext(in, key);
   if (v.size() != 3) throw UsageError(std::string("input '") + key + "' must be [x, y, theta]");
   return Pose{v[0], v[1], v[2]};
 }
@@ -65,7 +81,9 @@ std::vector<Disc> discs_arg(const Json& in) {
   for (const Json& d : a) {
     if (!d.is_object() || !d.contains("c") || !d.contains("r") || !d["r"].is_number())
       throw UsageError("a disc must be {\"c\": [x, y], \"r\": r}");
-    out.push_back(Disc{point_of(d["c"], "disc centre"), d["r"].get<double>()});
+    Point vel{0.0, 0.0};
+    if (d.contains("vel")) vel = point_of(d["vel"], "disc velocity");
+    out.push_back(Disc{point_of(d["c"], "disc centre"), d["r"].get<double>(), vel});
   }
   return out;
 }
@@ -180,7 +198,7 @@ void register_sensors2023_dwa_rules(Registry& r) {
       "Evaluation G = sigma(alpha heading + beta dist + gamma velocity) over the valid candidates, and the choice (Eq. 13)",
       "pathref::dwa::evaluate",
       {{"candidates", "object[]", "{heading (deg), dtheta (|rad|), clearance (m), velocity (m/s), valid (bool)}"},
-       {"alpha", "number", "optional (0.05)"}, {"beta", "number", "optional (0.2)"}, {"gamma", "number", "optional (0.1)"},
+       {"alpha", "number", "optional (0.2)"}, {"beta", "number", "optional (0.2)"}, {"gamma", "number", "optional (0.1)"},
        {"k_heading", "number", "optional (0.15)"}, {"k_clearance", "number", "optional (1.0)"},
        {"k_velocity", "number", "optional (1.0)"}, {"v_max", "number", "optional (1.0), for cost"},
        {"evaluation", "string", "normalised (default) | cost"}},
@@ -232,7 +250,8 @@ void register_sensors2023_dwa_rules(Registry& r) {
        {"points", "number[2][]", "the trajectory P_1 ... P_N (one point: a point clearance)"},
        {"radius", "number", "robot radius, m"}, {"cap", "number", "clearance cap, m"},
        {"temporary", "cell[]", "optional: present temporary cells"},
-       {"discs", "object[]", "optional: {c: [x, y], r}"},
+       {"discs", "object[]", "optional: {c: [x, y], r, vel: [vx, vy] (optional)}"},
+       {"dt", "number", "optional: step of the trajectory's poses (discs move by vel (j+1) dt); 0 default"},
        {"clearance_at", "string", "trajectory (default) | end"}},
       {{"clearance", "number", "m (negative: collision)"}, {"point_clearances", "number[]", "per point"}},
       [](const Json& in) {
@@ -246,12 +265,13 @@ void register_sensors2023_dwa_rules(Registry& r) {
         std::vector<Pose> traj;
         Json pcs = Json::array();
         const double radius = arg_number(in, "radius"), cap = arg_number(in, "cap");
+        const double dt = opt_num(in, "dt", 0.0);
         for (const Json& p : a) {
           const Point q = point_of(p, "a point");
           traj.push_back(Pose{q.x, q.y, 0.0});
-          pcs.push_back(number(point_clearance(q, obs, radius, cap)));
+          pcs.push_back(number(point_clearance(q, obs, radius, cap, static_cast<double>(traj.size()) * dt)));
         }
-        return Json{{"clearance", number(trajectory_clearance(traj, obs, radius, cap, at))}, {"point_clearances", pcs}};
+        return Json{{"clearance", number(trajectory_clearance(traj, obs, radius, cap, at, dt))}, {"point_clearances", pcs}};
       }});
   r.add(Rule{
       "sensors2023.dwa.step",

@@ -39,7 +39,7 @@ class Positions {
   }
   std::string string_token() {  // at '"'; returns the decoded string
     const std::size_t start = i_++;
-    while (i_ < t_.size() && t_[i_] != '"') i_ += t_[i_] == '\\' ? 2 : 1;
+    while (i_ < t_.size() && t_[i_] != '"') i_ += t_[i_] == '\\' ? std::size_t{2} : std::size_t{1};
     ++i_;
     try {
       return Json::parse(t_.substr(start, i_ - start)).get<std::string>();
@@ -211,7 +211,7 @@ DwaParams read_dwa(const Reader& rd, const Json& o, const std::string& ptr, DwaP
   rd.keys(o, ptr, {"dt", "horizon", "v_min", "v_max", "w_max", "acc_v", "dec_v", "acc_w", "dec_w", "v_res", "w_res",
                    "alpha", "beta", "gamma", "k_heading", "k_clearance", "k_velocity", "clearance_cap",
                    "evaluation", "clearance_at", "heading_wrap", "window_upper", "admissible", "motion_order",
-                   "heading_target"});
+                   "heading_target", "obstacle_prediction"});
   auto num = [&](const char* key, double& dst, double lo, double hi, bool open) {
     if (const Json* v = find(o, key)) dst = rd.number(*v, ptr + "/" + key, lo, hi, open);
   };
@@ -246,6 +246,12 @@ DwaParams read_dwa(const Reader& rd, const Json& o, const std::string& ptr, DwaP
   if (const Json* v = find(o, "window_upper")) p.window_upper = rd.option(*v, ptr + "/window_upper", parse_window_upper);
   if (const Json* v = find(o, "admissible")) p.admissible = rd.option(*v, ptr + "/admissible", parse_admissible);
   if (const Json* v = find(o, "motion_order")) p.motion_order = rd.option(*v, ptr + "/motion_order", parse_motion_order);
+  if (const Json* v = find(o, "obstacle_prediction")) {
+    const std::string s = rd.string(*v, ptr + "/obstacle_prediction");
+    if (s != "linear" && s != "static")
+      rd.fail(ptr + "/obstacle_prediction", "expected \"linear\" or \"static\", got \"" + s + "\"");
+    p.predict_movers = s == "linear";
+  }
   if (const Json* v = find(o, "heading_target")) {
     const std::string s = rd.string(*v, ptr + "/heading_target");
     if (s != "key-node" && s != "goal")
@@ -551,7 +557,15 @@ FusedResult simulate_fused(const FusedScenario& s) {
     for (const Temporary& tc : s.temporary)
       if (tc.appear <= t && t < tc.disappear) present.push_back(tc.cell);
     discs.clear();
-    for (std::size_t i = 0; i < s.moving.size(); ++i) discs.push_back(Disc{at[i], s.moving[i].r});
+    for (std::size_t i = 0; i < s.moving.size(); ++i) {
+      // velocity estimated from the last two observations (t - dt, t); zero at t = 0
+      Point vel{0.0, 0.0};
+      if (k > 0) {
+        const Point before = obstacle_position(s.moving[i].waypoints, static_cast<double>(k - 1) * dt);
+        vel = Point{(at[i].x - before.x) / dt, (at[i].y - before.y) / dt};
+      }
+      discs.push_back(Disc{at[i], s.moving[i].r, vel});
+    }
     const Obstacles obs{&s.grid, present, discs};
     // 2. follow update
     for (std::size_t i = 0; i < keys.size(); ++i)
@@ -674,7 +688,8 @@ Json params_json(const FusedScenario& s) {
                 {"window_upper", std::string(to_string(d.window_upper))},
                 {"admissible", std::string(to_string(d.admissible))},
                 {"motion_order", std::string(to_string(d.motion_order))},
-                {"heading_target", s.heading_to_goal ? "goal" : "key-node"}}},
+                {"heading_target", s.heading_to_goal ? "goal" : "key-node"},
+                {"obstacle_prediction", d.predict_movers ? "linear" : "static"}}},
               {"robot", {{"radius", d.radius}}},
               {"follow",
                {{"reach", s.follow.reach},

@@ -191,14 +191,18 @@ def heading(pose, target, mode):
     return 180.0 - a * DEG, a
 
 
+def num(v):
+    return {"inf": math.inf, "-inf": -math.inf, "nan": math.nan}[v] if isinstance(v, str) else v
+
+
 def eq14(inp):
-    h, a = heading(inp["pose"], inp["target"], opt(inp, "heading_wrap", "on"))
+    h, a = heading([num(x) for x in inp["pose"]], inp["target"], opt(inp, "heading_wrap", "on"))
     return {"heading": h, "dtheta": a}
 
 
 # ---- Eq. 13 -------------------------------------------------------------------------------------
 
-DEFAULT_WEIGHTS = {"alpha": 0.05, "beta": 0.2, "gamma": 0.1, "k_heading": 0.15, "k_clearance": 1.0,
+DEFAULT_WEIGHTS = {"alpha": 0.2, "beta": 0.2, "gamma": 0.1, "k_heading": 0.15, "k_clearance": 1.0,
                    "k_velocity": 1.0}
 
 
@@ -265,8 +269,9 @@ def cell_dist(p, c):
     return math.sqrt(dx * dx + dy * dy)
 
 
-def point_clear(p, g, temp, discs, radius, cap):
+def point_clear(p, g, temp, discs, radius, cap, tau=0.0):
     require(fin(p[0], p[1]) and abs(p[0]) <= 1e9 and abs(p[1]) <= 1e9, "point")
+    require(fin(tau), "tau")
     require(fin(cap) and cap > 0, "cap")
     require(fin(radius) and radius >= 0, "radius")
     reach = cap + radius
@@ -277,15 +282,15 @@ def point_clear(p, g, temp, discs, radius, cap):
                 m = min(m, cell_dist(p, (x, y)))
     for c in temp:
         m = min(m, cell_dist(p, c))
-    for (cx, cy), r in discs:
-        require(fin(cx, cy, r) and r >= 0, "disc")
-        dx, dy = p[0] - cx, p[1] - cy
+    for (cx, cy), r, (vx, vy) in discs:
+        require(fin(cx, cy, r, vx, vy) and r >= 0, "disc")
+        dx, dy = p[0] - (cx + tau * vx), p[1] - (cy + tau * vy)
         m = min(m, math.sqrt(dx * dx + dy * dy) - r)
     return min(cap, m - radius)
 
 
 def discs_of(inp):
-    return [((d["c"][0], d["c"][1]), d["r"]) for d in inp.get("discs", [])]
+    return [((d["c"][0], d["c"][1]), d["r"], tuple(d.get("vel", (0.0, 0.0)))) for d in inp.get("discs", [])]
 
 
 def clearance(inp):
@@ -295,7 +300,9 @@ def clearance(inp):
     at = opt(inp, "clearance_at", "trajectory")
     pts = inp["points"]
     require(len(pts) > 0, "empty trajectory")
-    pcs = [point_clear(p, g, temp, discs, inp["radius"], inp["cap"]) for p in pts]
+    dt = opt(inp, "dt", 0.0)
+    require(fin(dt) and dt >= 0, "dt")
+    pcs = [point_clear(p, g, temp, discs, inp["radius"], inp["cap"], (j + 1) * dt) for j, p in enumerate(pts)]
     if at == "trajectory":
         c = min(pcs)
     elif at == "end":
@@ -310,7 +317,7 @@ def clearance(inp):
 DEFAULT_DWA = dict(DEFAULT_LIMITS, **DEFAULT_WEIGHTS, dt=0.1, horizon=3.0, v_res=0.01,
                    w_res=0.017453292519943295, clearance_cap=1.0, evaluation="normalised",
                    clearance_at="trajectory", heading_wrap="on", window_upper="include", admissible="both",
-                   motion_order="heading-last", heading_target="key-node")
+                   motion_order="heading-last", heading_target="key-node", obstacle_prediction="linear")
 
 
 def dwa_params(block):
@@ -337,7 +344,8 @@ def control(pose, vc, wc, target, g, temp, discs, p, radius):
             for j in range(n):
                 q = step(q, v, om, p["dt"], p["motion_order"])
                 if p["clearance_at"] == "trajectory" or j == n - 1:
-                    c = min(c, point_clear(q, g, temp, discs, radius, cap))
+                    tau = float(j + 1) * p["dt"] if p["obstacle_prediction"] == "linear" else 0.0
+                    c = min(c, point_clear(q, g, temp, discs, radius, cap, tau))
             h, a = heading(q, target, p["heading_wrap"])
             ok = c >= 0.0 and adm(v, om, c, lim["dec_v"], lim["dec_w"], p["admissible"])
             cands.append((h, a, c if ok else max(0.0, c), v, ok))
@@ -636,7 +644,14 @@ def run(sc):
             outcome = "reached"
             break
         present = [c for c, a, d in temps if a <= t < d]
-        discs = [(position(wps, t), r) for r, wps in movers]
+        discs = []
+        for r, wps in movers:
+            o = position(wps, t)
+            vel = (0.0, 0.0)
+            if k > 0:
+                b = position(wps, float(k - 1) * dt)
+                vel = ((o[0] - b[0]) / dt, (o[1] - b[1]) / dt)
+            discs.append((o, r, vel))
         blocked = [point_clear(kp, g, present, discs, radius, bmargin + 1.0) < bmargin for kp in keys]
         state2, sw, sk = follow(state, pos, keys, blocked, t, dt, reach, btimeout, ktimeout)
         if sk != "none":
