@@ -63,7 +63,7 @@ void BM_segment_check(benchmark::State& state) {
   std::size_t i = 0, free = 0;
   for (auto _ : state) {
     const auto& [a, b] = segs[i++ & 4095u];
-    free += m.segment_free(a, b) ? 1 : 0;
+    free += m.segment_free(a, b) ? std::size_t{1} : std::size_t{0};
   }
   benchmark::DoNotOptimize(free);
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()));
