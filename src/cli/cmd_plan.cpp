@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "pathref/continuous/srrt.hpp"
 #include "pathref/core/error.hpp"
 #include "pathref/io/builtin_maps.hpp"
 #include "pathref/io/grid_text.hpp"
@@ -19,26 +20,6 @@
 #include "pathref/planners/planner.hpp"
 
 namespace pathref::cli {
-
-namespace {
-
-using Json = planners::Json;
-
-/// Everything `pathref plan` was given on the command line.
-struct PlanOptions {
-  std::string map_file;
-  std::string builtin;
-  std::string algo;
-  std::optional<std::string> start;  ///< nullopt: not given (an empty --start "" is an error)
-  std::optional<std::string> goal;
-  std::string seed = "1";  ///< decimal text; parsed by parse_seed (CLI11 would read 010 as octal)
-  std::string policy;  ///< empty: the planner's default corner policy
-  std::vector<std::string> sets;
-  bool json = false;
-  std::string json_out;
-  std::string svg;
-  MapReadArgs read;  ///< --format, --swamp, --water, --max-side, --max-cells (spec/formats.md#cli-map-options)
-};
 
 /// "X,Y" with X and Y non-negative decimal integers (at most 18 digits) -> Cell; UsageError
 /// naming `option` otherwise.
@@ -59,6 +40,29 @@ grid::Cell parse_cell_arg(const std::string& text, const char* option) {
   };
   return grid::Cell{number(text.substr(0, comma)), number(text.substr(comma + 1))};
 }
+
+namespace {
+
+using Json = planners::Json;
+
+/// Everything `pathref plan` was given on the command line.
+struct PlanOptions {
+  std::string map_file;
+  std::string builtin;
+  std::string algo;
+  std::optional<std::string> start;  ///< nullopt: not given (an empty --start "" is an error)
+  std::optional<std::string> goal;
+  std::optional<std::string> start_xy;  ///< continuous planners only (spec/cli.md#plan-continuous)
+  std::optional<std::string> goal_xy;
+  bool policy_given = false;
+  std::string seed = "1";  ///< decimal text; parsed by parse_seed (CLI11 would read 010 as octal)
+  std::string policy;  ///< empty: the planner's default corner policy
+  std::vector<std::string> sets;
+  bool json = false;
+  std::string json_out;
+  std::string svg;
+  MapReadArgs read;  ///< --format, --swamp, --water, --max-side, --max-cells (spec/formats.md#cli-map-options)
+};
 
 /// The --seed value: a decimal integer in [0, 2^32 - 1], digits only (no sign, no 0x, leading
 /// zeros are decimal). UsageError otherwise.
@@ -255,13 +259,35 @@ std::string plan_svg(const io::PlanRecord& rec, const grid::Grid& g, const Json&
 
 /// `pathref plan`: exit 0 when a path was found, 1 when the goal is unreachable.
 int run_plan(const PlanOptions& o) {
+  if (continuous::is_continuous_planner(o.algo)) {
+    ContinuousPlanArgs a;
+    a.map_file = o.map_file;
+    a.builtin = o.builtin;
+    a.algo = o.algo;
+    a.start = o.start;
+    a.goal = o.goal;
+    a.start_xy = o.start_xy;
+    a.goal_xy = o.goal_xy;
+    a.seed = parse_seed(o.seed);
+    a.policy_given = o.policy_given;
+    a.overrides = parse_sets(o.sets);
+    a.json = o.json;
+    a.json_out = o.json_out;
+    a.svg = o.svg;
+    a.read = o.read;
+    return run_continuous_plan(a);
+  }
   const planners::Planner* planner = planners::find_planner(o.algo);
   if (planner == nullptr) {
     std::string known;
     for (const auto& p : planners::planners()) known += (known.empty() ? "" : ", ") + p.name;
+    for (const auto n : continuous::continuous_planner_names()) known += ", " + std::string(n);
     throw UsageError(fmt::format("unknown --algo '{}' (known: {})", o.algo,
                                  known.empty() ? "none registered" : known));
   }
+  if (o.start_xy || o.goal_xy)
+    throw UsageError(fmt::format("--{} is for the continuous planners ({}); {} plans on grid cells: give --start/--goal X,Y",
+                                 o.start_xy ? "start-xy" : "goal-xy", "rrt, s-rrt", o.algo));
   const std::uint32_t seed = parse_seed(o.seed);
   const bool policy_is_default = o.policy.empty();
   const grid::CornerPolicy policy =
@@ -341,6 +367,7 @@ void add_plan_commands(CLI::App& app, Action& run) {
   static PlanOptions o;
   std::string algos;
   for (const auto& p : planners::planners()) algos += (algos.empty() ? "" : ", ") + p.name;
+  for (const auto n : continuous::continuous_planner_names()) algos += ", " + std::string(n);
   auto* plan = app.add_subcommand(
       "plan", "Run one planner on one map; print the path, its metrics, the seed and every parameter");
   auto* map_opt = plan->add_option("--map", o.map_file, "map file: pathref-grid, MovingAI .map or 0/1 matrix (spec/formats.md)")->type_name("FILE");
@@ -355,12 +382,20 @@ void add_plan_commands(CLI::App& app, Action& run) {
       plan->add_option("--start", start_text, "start cell X,Y (default: the map's start)")->type_name("X,Y");
   auto* goal_opt =
       plan->add_option("--goal", goal_text, "goal cell X,Y (default: the map's goal)")->type_name("X,Y");
+  static std::string start_xy_text;
+  static std::string goal_xy_text;
+  auto* start_xy_opt = plan->add_option("--start-xy", start_xy_text,
+                                        "continuous planners (rrt, s-rrt): start in world coordinates")
+                           ->type_name("X,Y");
+  auto* goal_xy_opt = plan->add_option("--goal-xy", goal_xy_text,
+                                       "continuous planners (rrt, s-rrt): goal in world coordinates")
+                          ->type_name("X,Y");
   plan->add_option("--seed", o.seed, "seed of the random stream, 0 to 4294967295 (spec/rng.md)")
       ->type_name("N")
       ->capture_default_str();  // a string, parsed by parse_seed
-  plan->add_option("--policy", o.policy,
-                   "corner policy for diagonal moves (spec/grid.md); default: the planner's "
-                   "(strict; always for aco-classic and ga-classic)")
+  auto* policy_opt = plan->add_option("--policy", o.policy,
+                                      "corner policy for diagonal moves (spec/grid.md); default: the "
+                                      "planner's (strict; always for aco-classic and ga-classic)")
       ->type_name("POLICY")
       ->check(CLI::IsMember({"never", "strict", "one", "always"}));
   plan->add_option("--set", o.sets, "planner parameter key=value (repeatable; value JSON or plain string)")
@@ -370,9 +405,12 @@ void add_plan_commands(CLI::App& app, Action& run) {
   plan->add_option("--json-out", o.json_out, "also write the JSON object to FILE")->type_name("FILE");
   plan->add_option("--svg", o.svg, "write an SVG figure: map, obstacles, S, T, path, legend (+ convergence)")
       ->type_name("FILE");
-  plan->callback([&run, start_opt, goal_opt] {
+  plan->callback([&run, start_opt, goal_opt, start_xy_opt, goal_xy_opt, policy_opt] {
     if (start_opt->count() > 0) o.start = start_text;
     if (goal_opt->count() > 0) o.goal = goal_text;
+    if (start_xy_opt->count() > 0) o.start_xy = start_xy_text;
+    if (goal_xy_opt->count() > 0) o.goal_xy = goal_xy_text;
+    o.policy_given = policy_opt->count() > 0;
     run = [] { return run_plan(o); };
   });
 

@@ -4,7 +4,10 @@
 #include <fmt/core.h>
 #include <sys/utsname.h>
 
+#include <algorithm>
 #include <chrono>
+#include <functional>
+#include <map>
 #include <cstdint>
 #include <ctime>
 #include <filesystem>
@@ -21,7 +24,10 @@
 #include "pathref/core/error.hpp"
 #include "pathref/grid/grid.hpp"
 #include "pathref/io/map_file.hpp"
+#include "pathref/reproduce/cin2021.hpp"
 #include "pathref/reproduce/han.hpp"
+#include "pathref/reproduce/runs.hpp"
+#include "pathref/reproduce/sensors2023.hpp"
 #include "pathref/reproduce/shi2022.hpp"
 
 namespace pathref::cli {
@@ -41,7 +47,13 @@ struct ReproduceOptions {
   std::string out_dir = "docs/reproduction";
   std::string policy = "strict";
   std::string orientation = "paper";
+  std::string map_b;
+  std::string map_c;
   bool quick = false;
+  std::string jobs = "1";       ///< --jobs N: threads (reproduce.execution)
+  std::string emit_jobs;        ///< --emit-jobs FILE: write one command per run instead of running
+  std::string job_results;      ///< --job-results DIR: where the emitted commands write (default FILE.results)
+  std::string merge;            ///< --merge DIR: build the report from the emitted commands' outputs
 };
 
 /// A decimal integer in [lo, hi], digits only (leading zeros are decimal); UsageError otherwise.
@@ -107,7 +119,7 @@ std::string build_type() {
 
 void write_file(const std::filesystem::path& p, const std::string& text) {
   std::error_code ec;
-  std::filesystem::create_directories(p.parent_path(), ec);
+  if (!p.parent_path().empty()) std::filesystem::create_directories(p.parent_path(), ec);
   std::ofstream out(p, std::ios::binary);
   out << text;
   out.close();
@@ -136,15 +148,17 @@ int write_outputs(const Json& doc, const std::string& out_dir, const std::string
   write_file(md_path, md);
   written.push_back(md_path);
   for (const auto& p : written) fmt::print("wrote {}\n", p.string());
-  int holds = 0, fails = 0, untestable = 0;
+  int holds = 0, fails = 0, not_significant = 0, inconclusive = 0, untestable = 0;
   for (const Json& c : doc.at("claims")) {
     const auto v = c.at("verdict").get<std::string>();
     if (v == "holds") ++holds;
     else if (v == "does not hold") ++fails;
+    else if (v == "not significant") ++not_significant;
+    else if (v == "inconclusive") ++inconclusive;
     else ++untestable;
   }
-  fmt::print("{}: {} claims: {} hold, {} do not hold, {} cannot be tested ({:.1f} s)\n", paper,
-             doc.at("claims").size(), holds, fails, untestable,
+  fmt::print("{}: {} claims: {} hold, {} do not hold, {} not significant, {} inconclusive, {} cannot be tested ({:.1f} s)\n",
+             paper, doc.at("claims").size(), holds, fails, not_significant, inconclusive, untestable,
              doc.at("provenance").at("total_wall_s").get<double>());
   return 0;
 }
@@ -163,6 +177,94 @@ reproduce::Provenance provenance(const std::string& command) {
   return p;
 }
 
+/// A shell word: 'text' with every ' written as '\''.
+std::string shell_quote(const std::string& text) {
+  std::string q = "'";
+  for (const char c : text) {
+    if (c == '\'') q += "'\\''";
+    else q += c;
+  }
+  return q + "'";
+}
+
+/// The reproduce.execution options of `o`, appended to the provenance command.
+std::string execution_suffix(const ReproduceOptions& o) {
+  std::string s;
+  if (o.jobs != "1") s += " --jobs " + o.jobs;
+  if (!o.merge.empty()) s += " --merge " + o.merge;
+  return s;
+}
+
+/// Every run's record in DIR (the outputs of the commands of --emit-jobs), by job key.
+std::map<std::string, Json> read_job_results(const std::string& dir) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec)) throw UsageError(fmt::format("--merge: '{}' is not a directory", dir));
+  std::vector<fs::path> files;
+  for (const auto& e : fs::directory_iterator(dir, ec))
+    if (e.path().extension() == ".json") files.push_back(e.path());
+  std::sort(files.begin(), files.end());
+  std::map<std::string, Json> out;
+  for (const fs::path& f : files) {
+    std::ifstream in(f, std::ios::binary);
+    std::stringstream buf;
+    buf << in.rdbuf();
+    Json j;
+    try {
+      j = Json::parse(buf.str());
+    } catch (const Json::exception& e) {
+      throw UsageError(fmt::format("--merge: '{}' is not JSON ({}); did its job fail?", f.string(), e.what()));
+    }
+    if (!j.is_object() || j.value("format", "") != "pathref-reproduce-run" || !j.contains("key") || !j.contains("record"))
+      throw UsageError(fmt::format("--merge: '{}' is not the output of 'pathref reproduce run-job'", f.string()));
+    const auto key = j.at("key").get<std::string>();
+    const auto [it, fresh] = out.emplace(key, j.at("record"));
+    if (!fresh && it->second != j.at("record"))
+      throw UsageError(fmt::format("--merge: two different results for the run '{}' in '{}'", key, dir));
+  }
+  return out;
+}
+
+/// Runs `produce` under the execution that o's --jobs, --emit-jobs and --merge select
+/// (spec reproduce.execution) and hands the document to `write`; with --emit-jobs writes the
+/// commands instead and no report.
+int execute(const ReproduceOptions& o, const std::function<Json()>& produce,
+            const std::function<int(const Json&)>& write) {
+  if (!o.emit_jobs.empty() && !o.merge.empty()) throw UsageError("--emit-jobs and --merge exclude each other");
+  reproduce::Execution ex;
+  ex.jobs = static_cast<int>(parse_int(o.jobs, "--jobs", 1, 256));
+  std::vector<Json> emitted;
+  std::map<std::string, Json> merged;
+  if (!o.emit_jobs.empty()) {
+    ex.mode = reproduce::Execution::Mode::emit;
+    ex.emitted = &emitted;
+  } else if (!o.merge.empty()) {
+    merged = read_job_results(o.merge);
+    ex.mode = reproduce::Execution::Mode::merge;
+    ex.merged = &merged;
+    ex.merged_from = o.merge;
+  }
+  const reproduce::ExecutionScope scope(ex);
+  const Json doc = produce();
+  if (o.emit_jobs.empty()) return write(doc);
+  namespace fs = std::filesystem;
+  const std::string results = o.job_results.empty() ? o.emit_jobs + ".results" : o.job_results;
+  std::error_code ec;
+  fs::create_directories(results, ec);
+  if (ec) throw UsageError(fmt::format("cannot create '{}'", results));
+  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+  const std::string pathref = ec ? std::string("pathref") : exe.string();
+  std::string text;
+  for (std::size_t i = 0; i < emitted.size(); ++i)
+    text += fmt::format("{} reproduce run-job {} > {}\n", shell_quote(pathref), shell_quote(emitted[i].dump()),
+                        shell_quote((fs::path(results) / fmt::format("{:06}.json", i + 1)).string()));
+  write_file(fs::path(o.emit_jobs), text);
+  fmt::print("wrote {} ({} jobs; their outputs go to {})\n", o.emit_jobs, emitted.size(), results);
+  fmt::print("next: run every line (e.g. parallel -j N < {}), then the same reproduce command with --merge {}\n",
+             o.emit_jobs, results);
+  return 0;
+}
+
 int run_shi(const ReproduceOptions& o) {
   reproduce::ShiConfig cfg;
   cfg.runs = o.runs.empty() ? (o.quick ? 3 : 50) : parse_int(o.runs, "--runs", 1, 10000);
@@ -178,11 +280,14 @@ int run_shi(const ReproduceOptions& o) {
       "pathref reproduce shi2022 --simple {} --complex {} --runs {} --seed {} --policy {} --orientation {} --out-dir {}",
       o.simple, o.complex, cfg.runs, cfg.seed, o.policy, o.orientation, o.out_dir);
   if (o.quick) cmd += " --quick";
-  cfg.provenance = provenance(cmd);
+  cfg.provenance = provenance(cmd + execution_suffix(o));
+  cfg.provenance.jobs = static_cast<int>(parse_int(o.jobs, "--jobs", 1, 256));
+  cfg.provenance.execution = o.merge.empty() ? "run" : "merge";
   cfg.progress = progress_printer();
-  const Json doc = reproduce::run_shi2022(cfg);
-  return write_outputs(doc, o.out_dir, "shi2022", reproduce::shi2022_markdown(doc, "shi2022", "shi2022/reproduce.json"),
-                       reproduce::shi2022_figures(doc));
+  return execute(o, [&] { return reproduce::run_shi2022(cfg); }, [&](const Json& doc) {
+    return write_outputs(doc, o.out_dir, "shi2022", reproduce::shi2022_markdown(doc, "shi2022", "shi2022/reproduce.json"),
+                         reproduce::shi2022_figures(doc));
+  });
 }
 
 int run_han_cmd(const ReproduceOptions& o) {
@@ -211,11 +316,58 @@ int run_han_cmd(const ReproduceOptions& o) {
       "pathref reproduce han --runs {} --sweep-runs {} --maps-per-edge {} --edges {} --seed {} --policy {} --out-dir {}",
       cfg.runs, cfg.sweep_runs, cfg.maps_per_edge, edges, cfg.seed, o.policy, o.out_dir);
   if (o.quick) cmd += " --quick";
+  cfg.provenance = provenance(cmd + execution_suffix(o));
+  cfg.provenance.jobs = static_cast<int>(parse_int(o.jobs, "--jobs", 1, 256));
+  cfg.provenance.execution = o.merge.empty() ? "run" : "merge";
+  cfg.progress = progress_printer();
+  return execute(o, [&] { return reproduce::run_han(cfg); }, [&](const Json& doc) {
+    return write_outputs(doc, o.out_dir, "han", reproduce::han_markdown(doc, "han", "han/reproduce.json"),
+                         reproduce::han_figures(doc));
+  });
+}
+
+int run_cin2021_cmd(const ReproduceOptions& o) {
+  reproduce::CinConfig cfg;
+  cfg.quick = o.quick;
+  cfg.runs = o.runs.empty() ? (o.quick ? 3 : 20) : parse_int(o.runs, "--runs", 2, 10000);
+  cfg.seed = static_cast<std::uint32_t>(parse_int(o.seed, "--seed", 0, 0xFFFFFFFFLL));
+  cfg.policy = grid::parse_corner_policy(o.policy);
+  if (static_cast<std::uint64_t>(cfg.seed) + static_cast<std::uint64_t>(cfg.runs) - 1 > 4294967295ULL)
+    throw UsageError("--seed + --runs - 1 must not exceed 4294967295");
+  if (!o.map_b.empty()) cfg.map_b = reproduce::ProtocolMap{o.map_b, load_grid(o.map_b)};
+  if (!o.map_c.empty()) cfg.map_c = reproduce::ProtocolMap{o.map_c, load_grid(o.map_c)};
+  std::string command = fmt::format("pathref reproduce cin2021-hga-aco --runs {} --seed {} --policy {}", cfg.runs,
+                                    cfg.seed, o.policy);
+  if (!o.map_b.empty()) command += " --map-b " + o.map_b;
+  if (!o.map_c.empty()) command += " --map-c " + o.map_c;
+  if (o.quick) command += " --quick";
+  command += " --out-dir " + o.out_dir;
+  cfg.provenance = provenance(command + execution_suffix(o));
+  cfg.provenance.jobs = static_cast<int>(parse_int(o.jobs, "--jobs", 1, 256));
+  cfg.provenance.execution = o.merge.empty() ? "run" : "merge";
+  cfg.progress = progress_printer();
+  return execute(o, [&] { return reproduce::run_cin2021(cfg); }, [&](const Json& doc) {
+    return write_outputs(doc, o.out_dir, "cin2021-hga-aco",
+                         reproduce::cin2021_markdown(doc, "cin2021-hga-aco", "cin2021-hga-aco/reproduce.json"),
+                         reproduce::cin2021_figures(doc));
+  });
+}
+
+int run_sensors2023_cmd(const ReproduceOptions& o) {
+  reproduce::Sensors2023Config cfg;
+  cfg.maps = o.maps_per_edge.empty() ? (o.quick ? 4 : 30) : parse_int(o.maps_per_edge, "--maps", 1, 10000);
+  cfg.seed = static_cast<std::uint32_t>(parse_int(o.seed, "--seed", 0, 4294967295LL));
+  cfg.quick = o.quick;
+  if (static_cast<std::uint64_t>(cfg.seed) + 100000ULL > 4294967295ULL)
+    throw UsageError("--seed must leave room for the random maps' seeds (seed + 100000 <= 4294967295)");
+  std::string cmd = fmt::format("pathref reproduce sensors2023 --maps {} --seed {} --out-dir {}", cfg.maps, cfg.seed, o.out_dir);
+  if (o.quick) cmd += " --quick";
   cfg.provenance = provenance(cmd);
   cfg.progress = progress_printer();
-  const Json doc = reproduce::run_han(cfg);
-  return write_outputs(doc, o.out_dir, "han", reproduce::han_markdown(doc, "han", "han/reproduce.json"),
-                       reproduce::han_figures(doc));
+  const Json doc = reproduce::run_sensors2023(cfg);
+  return write_outputs(doc, o.out_dir, "sensors2023",
+                       reproduce::sensors2023_markdown(doc, "sensors2023", "sensors2023/reproduce.json"),
+                       reproduce::sensors2023_figures(doc));
 }
 
 void add_common(CLI::App* cmd, ReproduceOptions& o) {
@@ -231,6 +383,16 @@ void add_common(CLI::App* cmd, ReproduceOptions& o) {
       ->check(CLI::IsMember({"never", "strict", "one", "always"}))
       ->capture_default_str();
   cmd->add_flag("--quick", o.quick, "few runs, few iterations: a smoke test that finishes in seconds");
+  cmd->add_option("--jobs", o.jobs, "runs in parallel on N threads (results identical to --jobs 1 except wall times)")
+      ->type_name("N")
+      ->capture_default_str();
+  cmd->add_option("--emit-jobs", o.emit_jobs,
+                  "write one self-contained command per run to FILE (for GNU parallel or a job array) instead of running")
+      ->type_name("FILE");
+  cmd->add_option("--job-results", o.job_results, "with --emit-jobs: where the commands write their results (default FILE.results)")
+      ->type_name("DIR");
+  cmd->add_option("--merge", o.merge, "build the report from the results of the --emit-jobs commands in DIR")
+      ->type_name("DIR");
 }
 
 }  // namespace
@@ -238,6 +400,8 @@ void add_common(CLI::App* cmd, ReproduceOptions& o) {
 void add_reproduce_command(CLI::App& app, Action& run) {
   static ReproduceOptions shi;
   static ReproduceOptions han;
+  static ReproduceOptions cin;
+  static ReproduceOptions s23;
   auto* cmd = app.add_subcommand("reproduce", "Run a paper's experiments and write the report, JSON and figures "
                                               "(spec/reproduce.md)");
   cmd->require_subcommand(1);
@@ -263,6 +427,46 @@ void add_reproduce_command(CLI::App& app, Action& run) {
   h->add_option("--edges", han.edges, "comma-separated map edges (default 10,15,...,100; 10,15 with --quick)")
       ->type_name("LIST");
   h->callback([&run] { run = [] { return run_han_cmd(han); }; });
+  auto* c = cmd->add_subcommand("cin2021-hga-aco",
+                                "cin2021 §5.6: HGA-ACO vs ACO vs GA on three 20x20 scenarios (Table 3), "
+                                "and on Shi's maps B and C when given");
+  add_common(c, cin);
+  c->add_option("--map-b", cin.map_b, "Shi's complex map (matlab-maps/mapB_20x20_ga.txt), optional")->type_name("FILE");
+  c->add_option("--map-c", cin.map_c, "Shi's simple map (matlab-maps/mapC_20x20_winsleo_traditional.txt), optional")
+      ->type_name("FILE");
+  c->callback([&run] { run = [] { return run_cin2021_cmd(cin); }; });
+  add_reproduce_cin2021_ml(cmd, run);
+  static std::string job_text;
+  auto* j = cmd->add_subcommand("run-job", "Run one job written by --emit-jobs and print its result (JSON) on stdout");
+  j->add_option("job", job_text, "the job: a JSON object, or @FILE")->required();
+  j->callback([&run] {
+    run = [] {
+      std::string text = job_text;
+      if (!text.empty() && text[0] == '@') {
+        std::ifstream in(text.substr(1), std::ios::binary);
+        if (!in) throw UsageError(fmt::format("cannot read job file '{}'", text.substr(1)));
+        std::stringstream buf;
+        buf << in.rdbuf();
+        text = buf.str();
+      }
+      Json job;
+      try {
+        job = Json::parse(text);
+      } catch (const Json::exception& e) {
+        throw UsageError(fmt::format("run-job: the job is not JSON ({})", e.what()));
+      }
+      fmt::print("{}\n", reproduce::run_job(job).dump());
+      return 0;
+    };
+  });
+  auto* k = cmd->add_subcommand("sensors2023",
+                                "Sensors 2023 (kinematic A* + following DWA): rebuilt 21x21 scene and random maps, Tables 2-4 "
+                                "(spec/sensors2023-dwa.md)");
+  k->add_option("--maps", s23.maps_per_edge, "random 21x21 maps (default 30; 4 with --quick)")->type_name("M");
+  k->add_option("--seed", s23.seed, "first random-map seed")->type_name("S")->capture_default_str();
+  k->add_option("--out-dir", s23.out_dir, "directory of the report, its JSON and figures")->type_name("DIR")->capture_default_str();
+  k->add_flag("--quick", s23.quick, "4 random maps: a smoke test");
+  k->callback([&run] { run = [] { return run_sensors2023_cmd(s23); }; });
 }
 
 }  // namespace pathref::cli

@@ -10,7 +10,9 @@
 #include "commands.hpp"
 #include "pathref/core/error.hpp"
 #include "pathref/io/map_file.hpp"
+#include "pathref/io/svg_fused.hpp"
 #include "pathref/io/svg_sim.hpp"
+#include "pathref/sim/fused.hpp"
 #include "pathref/sim/simulate.hpp"
 
 namespace pathref::cli {
@@ -25,9 +27,51 @@ struct SimulateOptions {
   bool full = false;
 };
 
+/// A "pathref-sim 2" scenario: the fused system of sensors2023 (spec/sensors2023-dwa.md).
+int run_fused(const SimulateOptions& o, const std::string& text, const std::string& base) {
+  dwa::FusedScenario s = dwa::parse_fused_scenario(text, o.scenario, base);
+  if (!o.planner.empty()) {
+    s.planner = o.planner;
+    s.planner_params = dwa::Json::object();
+    s.path.clear();
+  }
+  const dwa::FusedResult r = dwa::simulate_fused(s);
+  if (o.json) {
+    dwa::Json j = dwa::to_json(r, o.full);
+    j["params"] = dwa::params_json(s);
+    fmt::print("{}\n", j.dump());
+  } else {
+    fmt::print("scenario: {} (pathref-sim 2: sensors2023 global path + following DWA)\n", o.scenario);
+    fmt::print("parameters: {}\n", dwa::params_json(s).dump());
+    if (!r.global_found) {
+      fmt::print("global path: none ({})\n", s.path.empty() ? s.planner : std::string("given path"));
+    } else {
+      fmt::print("global path: {} cells, {} key nodes ({})\n", r.global_path.size(), r.key_nodes.size(),
+                 s.path.empty() ? s.planner : std::string("given path"));
+    }
+    fmt::print("outcome: {}\n", dwa::to_string(r.outcome));
+    fmt::print("time: {:.6f} s\n", r.time);
+    fmt::print("length: {:.6f} m\n", r.length);
+    fmt::print("turns: {}\n", r.turns);
+    fmt::print("min clearance: {:.6f} m\n", r.min_clearance);
+    fmt::print("steps: {} ({} braked)\n", r.steps, r.braked_steps);
+    for (const dwa::Skip& k : r.skips)
+      fmt::print("skip: t = {:.6f} s key node {} ({})\n", k.t, k.key, dwa::to_string(k.reason));
+  }
+  if (!o.svg_file.empty()) {
+    std::ofstream out(o.svg_file, std::ios::binary);
+    if (!out) throw UsageError("cannot write " + o.svg_file);
+    out << io::svg_fused(s, r);
+    if (!out) throw UsageError("cannot write " + o.svg_file);
+    if (!o.json) fmt::print("wrote {}\n", o.svg_file);
+  }
+  return r.outcome == dwa::Outcome::reached ? 0 : 1;
+}
+
 int run_simulate(const SimulateOptions& o) {
   const std::string text = io::read_text_file(o.scenario, "scenario file");
   const std::string base = std::filesystem::path(o.scenario).parent_path().string();
+  if (dwa::scenario_format(text) == "pathref-sim 2") return run_fused(o, text, base);
   sim::Scenario s = sim::parse_scenario(text, o.scenario, base);
   if (!o.planner.empty()) {
     s.planner = o.planner;
@@ -86,11 +130,12 @@ int run_simulate(const SimulateOptions& o) {
 void add_simulate_command(CLI::App& app, Action& run) {
   auto* cmd = app.add_subcommand(
       "simulate",
-      "Han's dynamic-obstacle simulation (IACO-A*, Fig. 5-6, 8) of a pathref-sim 1 scenario: RLS "
-      "prediction, side waits, frontal A* detours (spec/han-sim.md). Exit 1 if the goal is not "
-      "reached or a collision happened");
+      "Dynamic-obstacle simulation of a scenario file: \"pathref-sim 1\" is Han's (IACO-A*, Fig. 5-6, 8: RLS "
+      "prediction, side waits, frontal A* detours; spec/han-sim.md); \"pathref-sim 2\" is sensors2023's fused "
+      "global path + following DWA among moving and temporary obstacles (spec/sensors2023-dwa.md). Exit 1 if "
+      "the goal is not reached or a collision happened");
   static SimulateOptions o;
-  cmd->add_option("scenario", o.scenario, "scenario file (JSON, format \"pathref-sim 1\")")
+  cmd->add_option("scenario", o.scenario, "scenario file (JSON, format \"pathref-sim 1\" or \"pathref-sim 2\")")
       ->required()
       ->type_name("FILE");
   cmd->add_option("--planner", o.planner,

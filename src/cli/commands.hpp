@@ -2,9 +2,13 @@
 // Each subcommand of `pathref` lives in its own cmd_*.cpp and registers itself here.
 // Exit codes (spec/cli.md): 0 success, 1 "no path found" / check failed, 2 bad arguments or input.
 #include <CLI/CLI.hpp>
+#include <cstdint>
 #include <functional>
+#include <optional>
+#include <nlohmann/json.hpp>
 #include <string>
 
+#include "pathref/grid/grid.hpp"
 #include "pathref/io/map_file.hpp"
 
 namespace pathref::cli {
@@ -36,5 +40,31 @@ void add_map_read_options(CLI::App* cmd, MapReadArgs& args);
 void add_inflate_command(CLI::App& app, Action& run);  // inflate (spec/inflation.md#cli)
 void add_simulate_command(CLI::App& app, Action& run);  // simulate (spec/han-sim.md#cli)
 void add_reproduce_command(CLI::App& app, Action& run);  // reproduce (spec/reproduce.md)
+void add_learn_commands(CLI::App& app, Action& run);  // learn, classify (spec/cin2021-ml.md#cli)
+/// `reproduce cin2021-ml` (spec/cin2021-ml.md#reproduction), added to the reproduce command.
+void add_reproduce_cin2021_ml(CLI::App* reproduce, Action& run);
+
+/// "X,Y" with X and Y non-negative decimal integers (at most 18 digits) -> Cell; UsageError
+/// naming `option` otherwise (spec/cli.md#plan, values). Defined in cmd_plan.cpp.
+[[nodiscard]] grid::Cell parse_cell_arg(const std::string& text, const char* option);
+
+/// `pathref plan` for the continuous planners (rrt, s-rrt), as parsed by cmd_plan.cpp
+/// (spec/cli.md#plan-continuous). Defined in cmd_plan_continuous.cpp.
+struct ContinuousPlanArgs {
+  std::string map_file;
+  std::string builtin;
+  std::string algo;
+  std::optional<std::string> start, goal;        ///< cells (their centres)
+  std::optional<std::string> start_xy, goal_xy;  ///< world coordinates
+  std::uint32_t seed = 1;
+  bool policy_given = false;
+  nlohmann::json overrides = nlohmann::json::object();
+  bool json = false;
+  std::string json_out;
+  std::string svg;
+  MapReadArgs read;
+};
+/// Runs it: exit 0 when a path was found, 1 when not.
+[[nodiscard]] int run_continuous_plan(const ContinuousPlanArgs& args);
 
 }  // namespace pathref::cli

@@ -7,10 +7,13 @@
 #include "commands.hpp"
 #include "pathref/core/error.hpp"
 #include "pathref/geometry/inflation.hpp"
+#include "pathref/geometry/obstacles.hpp"
 
 int main(int argc, char** argv) {
   // inflation.* rules (pathref_geometry, CGAL) join the registry before its first use.
   pathref::geometry::install_inflation_rules();
+  // cin2021 S-RRT rules (exact collision checks in pathref_geometry) likewise.
+  pathref::geometry::install_srrt_rules();
   CLI::App app{"pathref " PATHREF_VERSION
                " - formally specified reference implementation of grid path planners"};
   app.require_subcommand(1);
@@ -25,6 +28,7 @@ int main(int argc, char** argv) {
   pathref::cli::add_inflate_command(app, run);
   pathref::cli::add_simulate_command(app, run);
   pathref::cli::add_reproduce_command(app, run);
+  pathref::cli::add_learn_commands(app, run);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

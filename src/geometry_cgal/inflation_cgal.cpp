@@ -15,6 +15,7 @@
 
 #include "pathref/core/error.hpp"
 #include "pathref/geometry/inflation.hpp"
+#include "exact_decimal.hpp"
 
 namespace pathref::geometry {
 
@@ -26,24 +27,7 @@ using ET = FT::ET;
 using P2 = K::Point_2;
 using S2 = K::Segment_2;
 
-/// The exact rational value of a Decimal.
-ET exact(const Decimal& d) {
-  ET acc(0);
-  const std::string& ds = d.digits;
-  for (std::size_t i = 0; i < ds.size(); i += 9) {
-    const std::size_t n = std::min<std::size_t>(9, ds.size() - i);
-    int chunk = 0, scale = 1;
-    for (std::size_t k = 0; k < n; ++k) {
-      chunk = chunk * 10 + (ds[i + k] - '0');
-      scale *= 10;
-    }
-    acc = acc * ET(scale) + ET(chunk);
-  }
-  ET p(1);
-  for (std::int32_t k = 0; k < (d.exp10 < 0 ? -d.exp10 : d.exp10); ++k) p = p * ET(10);
-  ET v = d.exp10 >= 0 ? ET(acc * p) : ET(acc / p);
-  return d.negative ? ET(-v) : v;
-}
+using exact_detail::exact;
 
 FT ft_int(std::int64_t v) { return FT(static_cast<double>(v)); }  // |v| <= 2^41 < 2^53: exact
 

@@ -5,7 +5,7 @@
 # and is skipped with a message when they are absent.
 # Usage: bash tests/cli/reproduce.sh path/to/pathref   (from the repository root)
 set -euo pipefail
-pathref=$1
+pathref=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")  # absolute: some steps run in another directory
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 
 expect_exit() {
@@ -147,22 +147,33 @@ else:
             assert all(len(x["obstacles"]) == 2 for x in d["runs"] if x["simulated"])
     for m in doc["maps"]:
         assert m["edge"] in (10, 15) and len(m["rows"]) == m["edge"]
-# the claims table: one row per claim, the same 'paper', 'pathref' and verdict text
-i = md.index("## Claims")
-claim_rows = [[c.strip() for c in l.strip().strip("|").split("|")] for l in md[i:].splitlines() if l.startswith("| ") and not l.startswith("| id") and not l.startswith("| ---")]
-assert len(claim_rows) == len(doc["claims"]) > 0, (len(claim_rows), len(doc["claims"]))
-for r, c in zip(claim_rows, doc["claims"]):
-    assert r[0] == c["id"] and r[3] == c["paper"] and r[4] == c["ours"], (r, c)
-    assert r[5].strip("*") == c["verdict"], (r, c)
-    assert c["verdict"] in ("holds", "does not hold", "cannot be tested")
+# the claims table: one row per claim, the same 'paper', 'pathref' and verdict texts (at n and 2n)
+VERDICTS = ("holds", "does not hold", "not significant", "inconclusive", "cannot be tested")
+def claim_table(start):
+    i = md.index(start)
+    j = min([k for k in (md.find("\n## ", i + 1), md.find("\n### ", i + 1)) if k > 0] or [len(md)])
+    return [[c.strip() for c in l.strip().strip("|").split("|")] for l in md[i:j].splitlines()
+            if l.startswith("| ") and not l.startswith("| id") and not l.startswith("| ---")]
+def check_claims(rows, claims):
+    assert len(rows) == len(claims) > 0, (len(rows), len(claims))
+    for r, c in zip(rows, claims):
+        assert r[0].replace(" †", "") == c["id"] and r[3] == c["paper"] and r[4] == c["ours"], (r, c)
+        assert (" †" in r[0]) == bool(c["depends_on"]), (r, c)
+        assert r[5].strip("*") == c["verdict_text"] and c["verdict_text"].startswith(c["verdict"]), (r, c)
+        assert c["verdict"] in VERDICTS, c
+        a2 = c["at_2n"]
+        assert r[6] == ("—" if a2 is None else ("**changed:** " if c["changed"] else "") + a2["verdict_text"]), (r, c)
+        # every tested claim carries the statistics that decided it (stats.*)
+        if c["verdict"] != "cannot be tested" and not c["id"].startswith(("M.", "C.")):
+            assert c["statistics"] is not None, c
+check_claims(claim_table("## Claims"), doc["claims"])
+if "checks" in doc:
+    check_claims(claim_table("## pathref's checks"), doc["checks"])
 if paper == "shi2022":  # the claims under other readings (reproduce.shi2022.readings)
-    i = md.index("Summary under the other readings")
-    part = md[i:md.index("\n## ", i)]
-    rows = [[c.strip() for c in l.strip().strip("|").split("|")] for l in part.splitlines() if l.startswith("| ") and not l.startswith("| id") and not l.startswith("| ---")]
-    assert len(rows) == len(doc["reading_claims"]) > 0, (len(rows), len(doc["reading_claims"]))
+    rows = claim_table("Summary under the other readings")
+    check_claims(rows, doc["reading_claims"])
     suffixes = {rd["suffix"] for rd in doc["protocol"]["readings"]}
-    for r, c in zip(rows, doc["reading_claims"]):
-        assert r[0] == c["id"] and r[4] == c["ours"] and r[5].strip("*") == c["verdict"], (r, c)
+    for c in doc["reading_claims"]:
         assert c["id"][-1] in suffixes and "[reading: " in c["text"], c
 print(f"{paper}: {checked} result rows and {len(doc['claims'])} claims agree")
 PY
@@ -176,6 +187,70 @@ for f in han.md han/reproduce.json han/length-vs-edge.svg han/time-vs-edge.svg h
   [ -s "$tmp/r/$f" ] || { echo "FAIL: $f not written"; exit 1; }
 done
 check_report han "$tmp/r"
+
+# ---- --jobs, --emit-jobs, --merge (reproduce.execution; docs/reproduction/README.md) -------------------
+same_results() {  # two reproduce.json: equal in every field except the measured wall times and provenance
+  python3 - "$1" "$2" <<'PY'
+import json, sys
+def strip(x):
+    if isinstance(x, dict):
+        return {k: strip(v) for k, v in x.items() if k not in ("wall_ms", "provenance", "planning-time")}
+    if isinstance(x, list):
+        return [strip(v) for v in x]
+    return x
+a, b = (json.load(open(f)) for f in sys.argv[1:3])
+# per-edge wall-time aggregates are measurements too
+for d in (a, b):
+    for e in d.get("edges", []):
+        for v in e.get("variants", {}).values():
+            v.pop("wall_ms", None)
+sa, sb = strip(a), strip(b)
+if sa != sb:
+    for k in sa:
+        if sa[k] != sb.get(k):
+            print("differs:", k)
+    sys.exit(1)
+PY
+}
+expect_exit 0 "" reproduce han --quick --out-dir "$tmp/j2" --jobs 2
+grep -qF -- "--jobs 2" "$tmp/j2/han.md" || { echo "FAIL: the report does not record --jobs 2"; exit 1; }
+grep -qF "measured under 2 parallel jobs" "$tmp/j2/han.md" || { echo "FAIL: wall times not marked as measured under 2 jobs"; exit 1; }
+same_results "$tmp/r/han/reproduce.json" "$tmp/j2/han/reproduce.json" || { echo "FAIL: --jobs 2 differs from --jobs 1"; exit 1; }
+expect_exit 2 "--jobs expects a decimal integer from 1 to 256, got '0'" reproduce han --quick --jobs 0 --out-dir "$tmp/o"
+expect_exit 2 "--emit-jobs and --merge exclude each other" reproduce han --quick --emit-jobs "$tmp/x.txt" --merge "$tmp" --out-dir "$tmp/o"
+expect_exit 2 "--merge: '$tmp/nonexistent' is not a directory" reproduce han --quick --merge "$tmp/nonexistent" --out-dir "$tmp/o"
+# emit: one self-contained command per run, no report
+(cd "$tmp" && "$pathref" reproduce han --quick --emit-jobs jobs.txt --out-dir "$tmp/e" >"$tmp/out" 2>"$tmp/err") ||
+  { echo "FAIL: --emit-jobs"; cat "$tmp/out" "$tmp/err"; exit 1; }
+[ ! -e "$tmp/e/han.md" ] || { echo "FAIL: --emit-jobs wrote a report"; exit 1; }
+[ -d "$tmp/jobs.txt.results" ] || { echo "FAIL: --emit-jobs did not create jobs.txt.results"; exit 1; }
+njobs=$(wc -l <"$tmp/jobs.txt")
+[ "$njobs" -gt 10 ] || { echo "FAIL: only $njobs jobs"; exit 1; }
+grep -q "reproduce run-job '{" "$tmp/jobs.txt" || { echo "FAIL: jobs are not run-job commands"; head -c 300 "$tmp/jobs.txt"; exit 1; }
+# merging before the jobs ran: a clear error
+expect_exit 2 "--merge: no result for the run" reproduce han --quick --merge "$tmp/jobs.txt.results" --out-dir "$tmp/o"
+if command -v parallel >/dev/null; then
+  # the README's GNU parallel example, on the --quick protocol
+  (cd "$tmp" && parallel -j 2 < jobs.txt) || { echo "FAIL: parallel < jobs.txt"; exit 1; }
+  [ "$(ls "$tmp/jobs.txt.results" | wc -l)" = "$njobs" ] || { echo "FAIL: not every job wrote its result"; exit 1; }
+  (cd "$tmp" && "$pathref" reproduce han --quick --merge jobs.txt.results --out-dir "$tmp/m" >"$tmp/out" 2>"$tmp/err") ||
+    { echo "FAIL: --merge"; cat "$tmp/out" "$tmp/err"; exit 1; }
+  same_results "$tmp/r/han/reproduce.json" "$tmp/m/han/reproduce.json" || { echo "FAIL: --merge differs from --jobs 1"; exit 1; }
+  grep -qF "merged with \`--merge\`" "$tmp/m/han.md" || { echo "FAIL: the merged report does not say so"; exit 1; }
+  # a result file that is not a run-job output
+  echo '{}' >"$tmp/jobs.txt.results/zzz.json"
+  expect_exit 2 "is not the output of 'pathref reproduce run-job'" reproduce han --quick --merge "$tmp/jobs.txt.results" --out-dir "$tmp/o"
+elif [ "${CI:-}" = "true" ]; then
+  echo "FAIL: GNU parallel is missing (tools/deps.sh installs it)"; exit 1
+else
+  echo "skipped: GNU parallel is not installed (apt-get install parallel); the --emit-jobs/--merge round trip was not run"
+fi
+# one job by hand: a tampered job is refused
+line=$(head -n 1 "$tmp/jobs.txt")
+job=$(python3 -c "import shlex,sys; w=shlex.split(sys.argv[1]); print(w[3])" "$line")
+"$pathref" reproduce run-job "$job" | python3 -c "import json,sys; d=json.load(sys.stdin); assert d['format']=='pathref-reproduce-run' and d['record']['seed']>=1, d"
+bad=$(python3 -c "import json,sys; j=json.loads(sys.argv[1]); j['seed']+=1; print(json.dumps(j))" "$job")
+expect_exit 2 "the job's key does not match its contents" reproduce run-job "$bad"
 
 # ---- shi2022 --quick on the shared maps ----------------------------------------------------------
 maps=../shared/data/matlab-maps

@@ -2,8 +2,10 @@
 // reproduce.shi2022.maps, reproduce.han.maps, reproduce.han.dynamic (spec/reproduce.md)
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <numbers>
 #include <set>
 #include <vector>
@@ -259,11 +261,26 @@ TEST_CASE("reproduce.markdown: verdict summary lists the ids per verdict", "[rep
   const reproduce::Json claims = reproduce::Json::array(
       {reproduce::claim_json(a), reproduce::claim_json(b), reproduce::claim_json(c), reproduce::claim_json(d)});
   CHECK(reproduce::md_verdict_summary(claims) ==
-        "4 claims: 2 hold, 1 do not hold, 1 cannot be tested.\n\n- holds: A.1, D.4\n- does not hold: B.2\n"
-        "- cannot be tested: C.3\n");
+        "4 claims (verdicts on the protocol's n runs): 2 hold, 1 do not hold, 0 not significant, 0 inconclusive, "
+        "1 cannot be tested.\n\n- holds: A.1, D.4\n- does not hold: B.2\n- not significant: —\n- inconclusive: —\n"
+        "- cannot be tested: C.3\n- verdict changes between n and 2n runs: none\n");
   const std::string table = reproduce::md_claims(claims);
-  CHECK(table.find("| B.2 | t | s | 1 | 2 | **does not hold** | r |") != std::string::npos);
-  CHECK(table.find("| C.3 | t | s | 1 | — | cannot be tested | why |") != std::string::npos);
+  CHECK(table.find("| B.2 | t | s | 1 | 2 | **does not hold** | — | r |") != std::string::npos);
+  CHECK(table.find("| C.3 | t | s | 1 | — | cannot be tested | — | why |") != std::string::npos);
+  // a verdict with its direction, at n and at 2n, and a reading it depends on
+  reproduce::Claim e{"E.5", "t", "s", "29.8", "x", "r", reproduce::Verdict::inconclusive, ""};
+  e.direction = reproduce::Direction::pathref_better;
+  e.verdict_2n = reproduce::Verdict::fails;
+  e.direction_2n = reproduce::Direction::pathref_better;
+  e.depends_on = {"reading k (alternative: E.5k)"};
+  const reproduce::Json ej = reproduce::claim_json(e);
+  CHECK(ej["verdict_text"] == "inconclusive — pathref better");
+  CHECK(ej["at_2n"]["verdict_text"] == "does not hold — pathref better");
+  CHECK(ej["changed"] == true);
+  CHECK(ej["change_note"].get<std::string>().find("more runs narrowed") != std::string::npos);
+  const std::string te = reproduce::md_claims(reproduce::Json::array({ej}));
+  CHECK(te.find("| E.5 † | t | s | 29.8 | x | inconclusive — pathref better | **changed:** does not hold — pathref "
+                "better | r; † depends on reading k (alternative: E.5k) |") != std::string::npos);
 }
 
 TEST_CASE("reproduce.shi2022.readings: planners re-run under each reading, claims re-judged", "[reproduce]") {
@@ -283,16 +300,26 @@ TEST_CASE("reproduce.shi2022.readings: planners re-run under each reading, claim
         REQUIRE(s.at("available").get<bool>());
         for (auto it = r.params.begin(); it != r.params.end(); ++it)
           CHECK(s.at("params_used").at(it.key()) == it.value());
-        CHECK(s.at("summary").at("runs") == 2);
+        CHECK(s.at("summary").at("runs") == 4);  // 2n runs (reproduce.judge)
       }
   std::set<std::string> ids;
   for (const reproduce::Json& c : doc.at("reading_claims")) ids.insert(c.at("id").get<std::string>());
-  // shift: the GA columns only (T3.1 = GA optimal length), never the hybrid's (T3.2)
-  CHECK(ids.count("T3.1s") == 1);
-  CHECK(ids.count("T4.10s") == 1);
-  CHECK(ids.count("E.2s") == 1);
-  CHECK(ids.count("T3.2s") == 0);
-  CHECK(ids.count("M.1s") == 0);
+  // blocked: the GA columns and IHA's (T3.1 = GA optimal length, T3.3 = IHA's), never the
+  // traditional hybrid's (T3.2)
+  CHECK(ids.count("T3.1b") == 1);
+  CHECK(ids.count("T4.10b") == 1);
+  CHECK(ids.count("E.2b") == 1);
+  CHECK(ids.count("T3.3b") == 1);
+  CHECK(ids.count("T3.2b") == 0);
+  CHECK(ids.count("M.1b") == 0);
+  // reject: the same planners
+  CHECK(ids.count("T3.1r") == 1);
+  CHECK(ids.count("T3.3r") == 1);
+  CHECK(ids.count("T3.2r") == 0);
+  // pernode: the weighted-fitness planners only (IGA, IGA*, IHA), not the single GA's column
+  CHECK(ids.count("T3.3p") == 1);
+  CHECK(ids.count("T3.1p") == 0);
+  CHECK(ids.count("T3.2p") == 0);
   // length: both hybrids' columns, and the reductions that read IHA
   CHECK(ids.count("T3.2l") == 1);
   CHECK(ids.count("T3.3l") == 1);
@@ -305,5 +332,100 @@ TEST_CASE("reproduce.shi2022.readings: planners re-run under each reading, claim
   CHECK(doc.at("protocol").at("readings").size() == reproduce::shi2022_readings().size());
   const std::string md = reproduce::shi2022_markdown(doc, "fig", "r.json");
   CHECK(md.find("## Readings that change the outcome") != std::string::npos);
-  CHECK(md.find("<!-- results:complex-shift -->") != std::string::npos);
+  CHECK(md.find("<!-- results:complex-blocked -->") != std::string::npos);
+  CHECK(md.find("<!-- results:complex-pernode -->") != std::string::npos);
+}
+
+TEST_CASE("reproduce.judge: value, reduction and comparison claims at n and 2n", "[reproduce]") {
+  const V n{29.79899, 29.79899, 29.79899, 29.79899};
+  const V two{29.79899, 29.79899, 29.79899, 29.79899, 29.79899, 29.79899, 29.79899, 29.79899};
+  reproduce::Claim c;
+  reproduce::value_claim(c, n, two, 29.8, reproduce::Quantity::length, reproduce::Sense::lower_is_better,
+                         reproduce::BootStatistic::mean, {}, 4);
+  CHECK(c.verdict == reproduce::Verdict::holds);
+  REQUIRE(c.verdict_2n.has_value());
+  CHECK(*c.verdict_2n == reproduce::Verdict::holds);
+  CHECK(c.ours == "mean 29.7990 [29.7990, 29.7990]");
+  CHECK(c.statistics["n"]["margin"].get<double>() == 0.01 * 29.8);
+  reproduce::Claim one;
+  reproduce::value_claim(one, V{30.0}, V{}, 29.8, reproduce::Quantity::length, reproduce::Sense::lower_is_better,
+                         reproduce::BootStatistic::mean, {}, 4);
+  CHECK(one.verdict == reproduce::Verdict::untestable);
+  reproduce::Claim r;  // IHA 2 turns against GA 17: reduction 88 %
+  reproduce::reduction_claim(r, V{2, 2, 2, 2}, V{17, 17, 17, 17}, V{}, V{}, 88, {});
+  CHECK(r.verdict == reproduce::Verdict::holds);  // 100 (17 - 2) / 17 = 88.2
+  reproduce::Claim worse;
+  reproduce::reduction_claim(worse, V{10, 10, 10}, V{17, 17, 17}, V{}, V{}, 88, {});
+  CHECK(worse.verdict == reproduce::Verdict::fails);
+  CHECK(worse.direction == reproduce::Direction::pathref_worse);
+  reproduce::Claim cmp;
+  reproduce::comparison_claim(cmp, V{1, 2, 3, 4, 5, 6, 7, 8}, V{11, 12, 13, 14, 15, 16, 17, 18}, V{}, V{},
+                              reproduce::Claimed::a_less, 2);
+  CHECK(cmp.verdict == reproduce::Verdict::holds);
+  CHECK(cmp.statistics["n"]["test"] == "Mann-Whitney U (two-sided)");
+  CHECK_FALSE(cmp.verdict_2n.has_value());
+  CHECK(reproduce::verdict_change_note(reproduce::Verdict::holds, reproduce::Direction::none, reproduce::Verdict::holds,
+                                       reproduce::Direction::none)
+            .empty());
+}
+
+TEST_CASE("reproduce.execution: --jobs, emitted jobs and merged records give the same series", "[reproduce]") {
+  const grid::Grid g = grid::Grid::from_rows_top_first({"......", ".##...", "......", "...#..", "......", "......"});
+  const auto series = [&] {
+    return reproduce::run_series("aco", reproduce::Json::object(), g, {0, 0}, {5, 5}, grid::CornerPolicy::strict, 3, 4,
+                                 true, {}, "test");
+  };
+  const auto strip = [](reproduce::Json j) {
+    for (auto& r : j["runs"]) r.erase("wall_ms");
+    j["summary"].erase("wall_ms");
+    return j;
+  };
+  const reproduce::Json one = series();
+  reproduce::Json two;
+  {
+    reproduce::Execution ex;
+    ex.jobs = 2;
+    const reproduce::ExecutionScope scope(ex);
+    two = series();
+  }
+  CHECK(strip(one) == strip(two));
+  std::vector<reproduce::Json> jobs;
+  {
+    reproduce::Execution ex;
+    ex.mode = reproduce::Execution::Mode::emit;
+    ex.emitted = &jobs;
+    const reproduce::ExecutionScope scope(ex);
+    (void)series();
+  }
+  REQUIRE(jobs.size() == 4);
+  std::map<std::string, reproduce::Json> merged;
+  for (const auto& job : jobs) {
+    const reproduce::Json out = reproduce::run_job(job);
+    CHECK(out["key"] == job["key"]);
+    // lossless: the record survives a text round trip
+    const reproduce::Json back = reproduce::Json::parse(out.dump());
+    CHECK(reproduce::record_to_json_full(reproduce::record_from_json_full(back["record"])) == back["record"]);
+    merged.emplace(out["key"].get<std::string>(), back["record"]);
+  }
+  {
+    reproduce::Execution ex;
+    ex.mode = reproduce::Execution::Mode::merge;
+    ex.merged = &merged;
+    const reproduce::ExecutionScope scope(ex);
+    CHECK(strip(series()) == strip(one));
+    merged.erase(merged.begin());
+    CHECK_THROWS_AS(series(), UsageError);
+  }
+  reproduce::Json bad = jobs[0];
+  bad["seed"] = 99;
+  CHECK_THROWS_AS(reproduce::run_job(bad), UsageError);
+  // parallel_for visits every index once
+  std::vector<int> seen(100, 0);
+  {
+    reproduce::Execution ex;
+    ex.jobs = 3;
+    const reproduce::ExecutionScope scope(ex);
+    reproduce::parallel_for(seen.size(), [&](std::size_t i) { seen[i] += 1; });
+  }
+  CHECK(std::all_of(seen.begin(), seen.end(), [](int v) { return v == 1; }));
 }

@@ -28,8 +28,8 @@ struct CornerFactor {
 /// allowed candidate j, in the caller's (canonical neighbour) order. Evaluated as
 /// (pow(tau, alpha) * pow(eta, beta)) * pow(omega, gamma) in binary64; pow(0, 0) = 1.
 /// Source: Shi et al. 2022, Eq. (2) numerator, Sec. 4.1, doi:10.3389/fbioe.2022.905983;
-/// with `corner`, Han (IJACSA) Eq. (1).
-/// Spec: shi2022.eq2
+/// with `corner`, Han (IJACSA) Eq. (1); cin2021 Eq. (29), doi:10.1155/2021/8025730.
+/// Spec: shi2022.eq2, cin2021.eq29
 /// Pre: tau, eta (and omega) non-empty and of equal size; every value finite and >= 0;
 /// alpha, beta (gamma) finite and >= 0; every weight finite (DomainError).
 /// Post: one weight per candidate, each finite and >= 0.
@@ -56,7 +56,7 @@ void transition_weights_into(std::span<const double> tau, std::span<const double
 /// Transition probabilities P_ij = w_j / sum_s w_s over the allowed set (Eq. 2):
 /// equations::proportional_probabilities(transition_weights(...)).
 /// Source: Shi et al. 2022, Eq. (2), Sec. 4.1, doi:10.3389/fbioe.2022.905983.
-/// Spec: shi2022.eq2
+/// Spec: shi2022.eq2, cin2021.eq29
 /// Pre: as transition_weights; the weights sum to a positive finite value (DomainError; an
 /// empty allowed set, a dead end, is a DomainError: the dead-end policy is the planner's).
 /// Post: p_j in [0, 1], |sum p - 1| <= 2 n 2^-53. The ant's draw is rng::roulette on the
@@ -69,7 +69,7 @@ void transition_weights_into(std::span<const double> tau, std::span<const double
 /// Distance heuristic eta_ij = 1 / d_ij, d_ij the Euclidean distance between the centres of the
 /// current cell i and the candidate j (metrics::centre_distance, Eq. 4).
 /// Source: Shi et al. 2022, Eq. (3)-(4), Sec. 4.1, doi:10.3389/fbioe.2022.905983.
-/// Spec: shi2022.eq3
+/// Spec: shi2022.eq3, cin2021.eq30
 /// Pre: i != j; |coordinates| <= 2^25 (DomainError).
 /// Post: 0 < eta; eta = 1 for an orthogonal step, 1/sqrt2 (rounded) for a diagonal one.
 /// Golden: golden/shi2022/shi2022.eq3.json
@@ -83,20 +83,24 @@ void transition_weights_into(std::span<const double> tau, std::span<const double
 /// Golden: golden/shi2022/shi2022.eq12.json
 [[nodiscard]] double eta_goal_directed(grid::Cell i, grid::Cell j, grid::Cell goal);
 
-/// Goal-only heuristic eta_j = 1 / d_jE of the classic MATLAB ant-colony script (the Euclidean
-/// distance from the centre of the candidate cell j to the goal's, metrics::centre_distance),
-/// evaluated 1.0 / d_jE; at the goal itself (d = 0) eta is the given constant `at_goal` (the
-/// script's Eta(E) = 100). Depends on j only, not on the current cell.
-/// Source: the classic ACO grid script (../shared/data/matlab-maps/README.txt, yiqun2.m).
-/// Spec: classic.plan.aco
+/// Goal-only heuristic eta_j = 1 / d_jE (the Euclidean distance from the centre of the candidate
+/// cell j to the goal's, metrics::centre_distance), evaluated 1.0 / d_jE; at the goal itself
+/// (d = 0) eta is the given constant `at_goal`. Depends on j only, not on the current cell.
+/// One function for two rules: the classic MATLAB ant-colony script's eta (Eta(E) = 100,
+/// at_goal = 100, planner aco-classic) and cin2021 Eq. (30)'s alternative reading
+/// `eta = goal_inverse` (d_GG := 1/2, i.e. at_goal = 2, planners aco-cin / hga-aco-cin).
+/// Source: the classic ACO grid script (../shared/data/matlab-maps/README.txt, yiqun2.m);
+/// cin2021 Eq. (30), Sec. 5.5.1, doi:10.1155/2021/8025730.
+/// Spec: classic.plan.aco, cin2021.eq30
 /// Pre: |coordinates| <= 2^25; at_goal finite > 0 (DomainError).
 /// Post: > 0; = at_goal iff j == goal; strictly decreasing in d_jE elsewhere.
-/// Golden: golden/classic/classic.plan.aco.json (through the planner)
+/// Golden: golden/classic/classic.plan.aco.json (through the planner),
+/// golden/cin2021-hga-aco/cin2021.eq30.json
 [[nodiscard]] double eta_goal_inverse(grid::Cell j, grid::Cell goal, double at_goal);
 
 /// Pheromone update tau(t+1) = (1 - rho) tau(t) + delta, evaluated as ((1 - rho) * tau) + delta.
 /// Source: Shi et al. 2022, Eq. (5), Sec. 4.1, doi:10.3389/fbioe.2022.905983.
-/// Spec: shi2022.eq5
+/// Spec: shi2022.eq5, cin2021.eq31, cin2021.eq34 (delta = 0)
 /// Pre: tau finite >= 0; 0 < rho < 1; delta finite >= 0; result finite (DomainError).
 /// Post: result >= (1 - rho) tau; result == (1 - rho) * tau when delta == 0; > 0 when tau > 0.
 /// Golden: golden/shi2022/shi2022.eq5.json

@@ -73,7 +73,7 @@ enum class MidNumber {
 /// length = metrics::path_length of the path. Evaluated as 1.0 / length.
 /// Source: Shi et al. 2022, Eq. (10), Sec. 4.2 and Eq. (15), Sec. 4.4.2,
 /// doi:10.3389/fbioe.2022.905983.
-/// Spec: shi2022.eq10, shi2022.eq15
+/// Spec: shi2022.eq10, shi2022.eq15, cin2021.eq20 (f1 of cin2021 Eq. 20, doi:10.1155/2021/8025730)
 /// Pre: length finite and > 0 (DomainError; a one-node path has no fitness).
 /// Post: > 0; strictly decreasing in length.
 /// Golden: golden/shi2022/shi2022.eq10.json, golden/shi2022/shi2022.eq15.json
@@ -88,7 +88,7 @@ struct FitnessWeights {
 
 /// Weighted fitness fit = a fit_1 + b fit_2 + c fit_3, evaluated ((a*f1) + (b*f2)) + (c*f3).
 /// Source: Shi et al. 2022, Eq. (14), Sec. 4.4.2, doi:10.3389/fbioe.2022.905983.
-/// Spec: shi2022.eq14
+/// Spec: shi2022.eq14, cin2021.eq26 (f = a f1 + b f2 is this function with c = 0)
 /// Pre: a, b, c, fit_1, fit_2, fit_3 finite and >= 0; result finite (DomainError).
 /// Post: >= 0; non-decreasing in each factor.
 /// Golden: golden/shi2022/shi2022.eq14.json

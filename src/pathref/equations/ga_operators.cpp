@@ -6,6 +6,7 @@
 #include <unordered_map>
 
 #include "pathref/core/error.hpp"
+#include "pathref/rng/draws.hpp"
 
 namespace pathref::ga {
 
@@ -290,6 +291,103 @@ std::size_t elite_count(std::size_t n, double fraction) {
   const double v = std::ceil(fraction * static_cast<double>(n));
   const auto c = static_cast<std::size_t>(v);
   return std::clamp(c, std::size_t{1}, n);
+}
+
+CutChildren crossover_cut(const grid::Grid& g, std::span<const grid::Cell> a,
+                          std::span<const grid::Cell> b, std::size_t k, std::size_t j,
+                          grid::CornerPolicy policy, MidRounding rounding, InitReject reject,
+                          IllegalStep illegal) {
+  require(a.size() >= 3 && b.size() >= 3, "cut crossover needs parents of >= 3 nodes");
+  require(k >= 1 && k + 2 <= a.size() && j >= 1 && j + 2 <= b.size(),
+          "cut crossover: the cut genes must be interior");
+  std::vector<grid::Cell> c1(a.begin(), a.begin() + static_cast<std::ptrdiff_t>(k) + 1);
+  c1.insert(c1.end(), b.begin() + static_cast<std::ptrdiff_t>(j) + 1, b.end());
+  std::vector<grid::Cell> c2(b.begin(), b.begin() + static_cast<std::ptrdiff_t>(j) + 1);
+  c2.insert(c2.end(), a.begin() + static_cast<std::ptrdiff_t>(k) + 1, a.end());
+  CutChildren out;
+  ChainRepair r1 = connect_chain(g, c1, policy, rounding, reject, illegal);
+  if (!r1.feasible) return out;
+  ChainRepair r2 = connect_chain(g, c2, policy, rounding, reject, illegal);
+  if (!r2.feasible) return out;
+  out.feasible = true;
+  out.children.first = std::move(r1.path);
+  out.children.second = std::move(r2.path);
+  return out;
+}
+
+Research parse_research(std::string_view name) {
+  if (name == "greedy") return Research::greedy;
+  if (name == "random") return Research::random;
+  throw UsageError("research must be greedy or random, not '" + std::string(name) + "'");
+}
+std::string_view to_string(Research v) noexcept { return v == Research::greedy ? "greedy" : "random"; }
+
+Walk research_walk(const grid::Grid& g, grid::Cell from, grid::Cell to,
+                   std::span<const grid::Cell> avoid, grid::CornerPolicy policy, Research mode,
+                   rng::Stream& stream, bool backtrack) {
+  require(g.in_bounds(from) && g.in_bounds(to), "re-search: cells outside the grid");
+  require(g.free(from) && g.free(to), "re-search: blocked end cell");
+  std::vector<std::uint8_t> closed(static_cast<std::size_t>(g.cell_count()), 0);
+  for (const grid::Cell c : avoid)
+    if (g.in_bounds(c)) closed[static_cast<std::size_t>(g.index(c))] = 1;
+  closed[static_cast<std::size_t>(g.index(to))] = 0;
+  Walk w;
+  w.cells.push_back(from);
+  closed[static_cast<std::size_t>(g.index(from))] = 1;
+  std::vector<grid::Cell> cand;
+  while (!(w.cells.back() == to)) {
+    cand.clear();
+    for (const grid::Move& m : grid::neighbours(g, w.cells.back(), policy))
+      if (closed[static_cast<std::size_t>(g.index(m.to))] == 0) cand.push_back(m.to);
+    if (cand.empty()) {
+      if (!backtrack) return Walk{};
+      w.cells.pop_back();  // the dead end stays closed
+      if (w.cells.empty()) return Walk{};
+      continue;
+    }
+    std::size_t pick = 0;
+    if (mode == Research::random) {
+      pick = rng::uniform_index(stream.next_double(), cand.size());
+    } else {
+      std::int64_t best = -1;
+      for (std::size_t i = 0; i < cand.size(); ++i) {
+        const std::int64_t dx = cand[i].x - to.x;
+        const std::int64_t dy = cand[i].y - to.y;
+        const std::int64_t d = dx * dx + dy * dy;
+        if (best < 0 || d < best) {
+          best = d;
+          pick = i;
+        }
+      }
+    }
+    w.cells.push_back(cand[pick]);
+    closed[static_cast<std::size_t>(g.index(cand[pick]))] = 1;
+  }
+  w.ok = true;
+  return w;
+}
+
+Mutants multidirectional_mutants(const grid::Grid& g, std::span<const grid::Cell> path,
+                                 std::size_t k, grid::CornerPolicy policy, Research mode,
+                                 rng::Stream& stream) {
+  const std::size_t n = path.size();
+  require(n >= 3 && k >= 1 && k + 2 <= n, "multidirectional mutation: k must be interior");
+  Mutants out;
+  {
+    const Walk w = research_walk(g, path[k], path[0], path.subspan(k + 1), policy, mode, stream);
+    if (w.ok) {
+      out.a.assign(w.cells.rbegin(), w.cells.rend());
+      out.a.insert(out.a.end(), path.begin() + static_cast<std::ptrdiff_t>(k) + 1, path.end());
+    }
+  }
+  {
+    const Walk w = research_walk(g, path[n - 1], path[k], path.subspan(0, k), policy, mode, stream);
+    if (w.ok) {
+      out.b.assign(path.begin(), path.begin() + static_cast<std::ptrdiff_t>(k));
+      out.b.insert(out.b.end(), w.cells.rbegin(), w.cells.rend());
+    }
+  }
+  return out;
 }
 
 }  // namespace pathref::ga

@@ -18,6 +18,7 @@
 
 #include "pathref/equations/ga.hpp"
 #include "pathref/grid/grid.hpp"
+#include "pathref/rng/mt19937.hpp"
 
 namespace pathref::ga {
 
@@ -217,5 +218,75 @@ struct Children {
 /// The number kept by "the top fraction": ceil(fraction * n) evaluated in binary64, at least 1
 /// when n >= 1. Spec: shi2022.op.elite. Pre: 0 < fraction <= 1 (DomainError).
 [[nodiscard]] std::size_t elite_count(std::size_t n, double fraction);
+
+/// What crossover_cut returns: the two repaired children, or feasible = false when a repair was
+/// rejected (the crossover of the pair is then void).
+struct CutChildren {
+  bool feasible = false;
+  Children children;
+};
+
+/// Single-point crossover at random cut genes of parents without a common gene (cin2021
+/// Figure 8a): the chains c1 = a[0..k] ++ b[j+1..] and c2 = b[0..j] ++ a[k+1..], each repaired
+/// by connect_chain (the GA's own repair: Eq. 8 continuity, Eq. 9 mid-points) with `rounding`,
+/// `reject` and `illegal`; feasible iff both repairs are. The defaults (blocked, reject) are
+/// ga-cin's (cin2021.plan.ga pins them), not the Shi planners' (shift, repair).
+/// Source: cin2021 Sec. 5.3.2, Figure 8(a), doi:10.1155/2021/8025730; repair of Shi et al. 2022
+/// Sec. 4.2 (shi2022.op.init).
+/// Spec: cin2021.op.crossover
+/// Pre: 1 <= k <= n_a - 2, 1 <= j <= n_b - 2; every cell inside g (DomainError).
+/// Post: feasible => both children start at a[0] (resp. b[0]), end at b.back() (resp. a.back())
+/// and every step is allowed under policy when the parents' are.
+/// Golden: golden/cin2021-hga-aco/cin2021.op.crossover.json
+[[nodiscard]] CutChildren crossover_cut(const grid::Grid& g, std::span<const grid::Cell> a,
+                                        std::span<const grid::Cell> b, std::size_t k, std::size_t j,
+                                        grid::CornerPolicy policy,
+                                        MidRounding rounding = MidRounding::floor,
+                                        InitReject reject = InitReject::blocked,
+                                        IllegalStep illegal = IllegalStep::reject);
+
+/// How the multidirectional mutation re-searches (option `research`, spec cin2021.op.mutation).
+enum class Research {
+  greedy,  ///< the candidate nearest the target (squared centre distance), first on ties; no draw
+  random,  ///< a uniformly drawn candidate (rng::uniform_index), one draw per step
+};
+[[nodiscard]] Research parse_research(std::string_view name);
+[[nodiscard]] std::string_view to_string(Research v) noexcept;
+
+/// A re-search walk from `from` to `to`: at each cell the candidates are its allowed moves
+/// (grid::neighbours, canonical order) into cells neither in `avoid` nor already on the walk
+/// (`to` is never avoided); greedy takes the nearest to `to`, random draws one (this is the one
+/// operator here that draws: one res53 double per step, from `stream`). Stops on `to`. At a cell
+/// without candidates the walk fails (ok = false), or, with `backtrack`, steps back (the cell stays
+/// closed; no draw) and fails only when it backtracks out of `from` (a randomised depth-first
+/// search: it reaches `to` whenever `to` is reachable avoiding `avoid`).
+/// Source: cin2021 Sec. 5.3.2, Figure 9 ("reverse search"), doi:10.1155/2021/8025730.
+/// Spec: cin2021.op.mutation
+/// Pre: from, to in bounds and free (DomainError). Post: ok => cells run from `from` to `to`, a
+/// valid simple path under policy avoiding `avoid`.
+struct Walk {
+  bool ok = false;
+  std::vector<grid::Cell> cells;
+};
+[[nodiscard]] Walk research_walk(const grid::Grid& g, grid::Cell from, grid::Cell to,
+                                 std::span<const grid::Cell> avoid, grid::CornerPolicy policy,
+                                 Research mode, rng::Stream& stream, bool backtrack = false);
+
+/// The two mutants of the multidirectional mutation at interior point k of `path` (cin2021
+/// Figure 9): A = reverse(research_walk(path[k] -> path[0], avoiding path[k+1..])) ++ path[k+1..];
+/// B = path[0..k-1] ++ reverse(research_walk(path[n-1] -> path[k], avoiding path[0..k-1])).
+/// A's walk draws first. An empty vector marks a failed walk.
+/// Source: cin2021 Sec. 5.3.2, Figure 9, doi:10.1155/2021/8025730.
+/// Spec: cin2021.op.mutation
+/// Pre: 1 <= k <= n - 2; path valid and simple (not checked beyond bounds: DomainError).
+/// Post: each non-empty mutant is a valid simple path from path[0] to path[n-1].
+/// Golden: golden/cin2021-hga-aco/cin2021.op.mutation.json
+struct Mutants {
+  std::vector<grid::Cell> a;
+  std::vector<grid::Cell> b;
+};
+[[nodiscard]] Mutants multidirectional_mutants(const grid::Grid& g, std::span<const grid::Cell> path,
+                                               std::size_t k, grid::CornerPolicy policy,
+                                               Research mode, rng::Stream& stream);
 
 }  // namespace pathref::ga

@@ -25,7 +25,7 @@ inline constexpr std::int64_t max_abs_coordinate = std::int64_t{1} << 25;
 [[nodiscard]] double centre_distance(grid::Cell a, grid::Cell b);
 
 /// Path length: sum of centre distances of consecutive cells, left to right.
-/// Source: Shi et al. 2022 Eq. (4), (15). Spec: metrics.length. Pre: the path domain.
+/// Source: Shi et al. 2022 Eq. (4), (15); cin2021 Eq. (19). Spec: metrics.length, cin2021.eq19. Pre: the path domain.
 /// Post: >= 0; == 0 iff one cell; for 8-neighbour chains == sum of grid::step_cost.
 /// Golden: golden/metrics/metrics.length.json
 [[nodiscard]] double path_length(std::span<const grid::Cell> path);
@@ -98,7 +98,7 @@ struct PathCheck {
 /// Checks that `path` is a legal plan: starts at start, ends at goal, every node in bounds and
 /// free, every step an allowed move under `policy`; reports the FIRST failure in the order of
 /// spec metrics.valid-path. Source: pathref (Shi et al. 2022 Sec. 3 moves).
-/// Spec: metrics.valid-path. Pre: none (never throws for any input).
+/// Spec: metrics.valid-path, cin2021.eq16 (safety: S = p_1, G = p_n). Pre: none (never throws for any input).
 /// Post: valid == (reason == "ok"). Golden: golden/metrics/metrics.valid-path.json
 [[nodiscard]] PathCheck validate_path(const grid::Grid& g, std::span<const grid::Cell> path,
                                       grid::Cell start, grid::Cell goal, grid::CornerPolicy policy);

@@ -13,7 +13,7 @@ namespace pathref::equations {
 /// S = w_0 + w_1 + ... + w_{n-1} accumulated left to right in binary64, then one division per k.
 /// Source: Shi et al. 2022, Eq. (2) (the denominator over allowed_k) and Eq. (11)
 /// (p_i = F_i / sum F_i), doi:10.3389/fbioe.2022.905983.
-/// Spec: shi2022.eq2, shi2022.eq11
+/// Spec: shi2022.eq2, shi2022.eq11, cin2021.eq27 (roulette P_i = f(i) / sum f), cin2021.eq29
 /// Pre: weights non-empty, every w_k finite and >= 0, S > 0 and finite (DomainError otherwise:
 /// an empty allowed set, a dead end, is the caller's case to handle, never a silent guess).
 /// Post: p.size() == weights.size(); 0 <= p_k <= 1; p_k == 0 when w_k == 0; without underflow

@@ -64,6 +64,14 @@ Planner make_aco_classic_planner() {
       &ant_colony::classic_aco);
 }
 
+Planner make_aco_cin_planner() {
+  return colony_planner(
+      "aco-cin",
+      "optimised ACO of cin2021 Sec. 5.5 (Eq. 29-35: iteration-best/global-best deposits with "
+      "weights N-t, t; dead-angle table), spec/cin2021-hga-aco.md",
+      &ant_colony::cin_aco);
+}
+
 Planner make_iaco_han_planner() {
   return colony_planner(
       "iaco-han",

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 #include <map>
 #include <optional>
@@ -31,14 +32,44 @@ std::string_view to_string(Eta v) noexcept {
     case Eta::goal_directed: return "goal_directed";
     case Eta::goal_inverse: return "goal_inverse";
   }
-  return "?";
+  return "inverse_distance";
 }
 DeadEnd parse_dead_end(std::string_view name) {
   if (name == "die") return DeadEnd::die;
   if (name == "backtrack") return DeadEnd::backtrack;
-  throw UsageError("dead_end must be die or backtrack, not '" + std::string(name) + "'");
+  if (name == "dead_angle") return DeadEnd::dead_angle;
+  throw UsageError("dead_end must be die, backtrack or dead_angle, not '" + std::string(name) + "'");
 }
-std::string_view to_string(DeadEnd v) noexcept { return v == DeadEnd::die ? "die" : "backtrack"; }
+std::string_view to_string(DeadEnd v) noexcept {
+  switch (v) {
+    case DeadEnd::die: return "die";
+    case DeadEnd::backtrack: return "backtrack";
+    case DeadEnd::dead_angle: return "dead_angle";
+  }
+  return "die";
+}
+DeadAngleRecord parse_dead_angle_record(std::string_view name) {
+  if (name == "cul_de_sac") return DeadAngleRecord::cul_de_sac;
+  if (name == "any_stuck") return DeadAngleRecord::any_stuck;
+  throw UsageError("dead_angle_record must be cul_de_sac or any_stuck, not '" + std::string(name) + "'");
+}
+std::string_view to_string(DeadAngleRecord v) noexcept {
+  return v == DeadAngleRecord::cul_de_sac ? "cul_de_sac" : "any_stuck";
+}
+DeadAngle parse_dead_angle(std::string_view name) {
+  if (name == "exclude") return DeadAngle::exclude;
+  if (name == "penalise_only") return DeadAngle::penalise_only;
+  throw UsageError("dead_angle must be exclude or penalise_only, not '" + std::string(name) + "'");
+}
+std::string_view to_string(DeadAngle v) noexcept {
+  return v == DeadAngle::exclude ? "exclude" : "penalise_only";
+}
+InitialMode parse_initial_mode(std::string_view name) {
+  if (name == "add") return InitialMode::add;
+  if (name == "replace") return InitialMode::replace;
+  throw UsageError("conversion must be add or replace, not '" + std::string(name) + "'");
+}
+std::string_view to_string(InitialMode v) noexcept { return v == InitialMode::add ? "add" : "replace"; }
 DrawU parse_draw_u(std::string_view name) {
   if (name == "lazy") return DrawU::lazy;
   if (name == "always") return DrawU::always;
@@ -116,6 +147,12 @@ void validate(const Config& c) {
     require(std::isfinite(c.h) && c.h >= 0.0, "ant colony: h must be finite and >= 0");
     require(std::isfinite(c.tau_min) && c.tau_min > 0.0, "ant colony: tau_min must be finite and > 0");
   }
+  if (c.deposit == Deposit::weighted_best && c.tau_bounds)
+    require(std::isfinite(c.tau_lower) && std::isfinite(c.tau_upper) && c.tau_lower > 0.0 &&
+                c.tau_lower < c.tau_upper,
+            "ant colony: tau bounds need 0 < tau_lower < tau_upper, finite");
+  if (c.dead_end == DeadEnd::dead_angle)
+    static_cast<void>(cin::dead_angle_penalty(1.0, c.lambda, c.lambda_form));  // 0 < lambda < 1
 }
 
 /// Direction slot of the step (dx, dy) in grid.neighbour-order: 0..7. The reverse step is 7 - k.
@@ -221,6 +258,23 @@ Config han_iaco() {
   return c;
 }
 
+Config cin_aco() {
+  Config c;
+  c.eta = Eta::inverse_distance;
+  c.deposit = Deposit::weighted_best;
+  c.dead_end = DeadEnd::dead_angle;
+  c.ants = 30;
+  c.iterations = 50;
+  c.alpha = 1.0;
+  c.beta = 2.0;
+  c.rho = 0.3;
+  c.Q = 1.0;
+  c.tau0 = 0.1;
+  c.lambda = 0.5;
+  c.eta_goal = 2.0;  // eta = goal_inverse (Eq. 30's alternative): d_GG := 1/2
+  return c;
+}
+
 Json to_params(const Config& c) {
   Json p = Json::object();
   p["ants"] = c.ants;
@@ -267,6 +321,18 @@ Json to_params(const Config& c) {
     p["h"] = c.h;
     p["tau_min"] = c.tau_min;
     p["bonus_edges"] = std::string(to_string(c.bonus_edges));
+  }
+  if (c.deposit == Deposit::weighted_best) {
+    p["weight_norm"] = std::string(cin::to_string(c.weight_norm));
+    p["tau_bounds"] = c.tau_bounds ? "on" : "off";
+    p["tau_lower"] = c.tau_lower;
+    p["tau_upper"] = c.tau_upper;
+  }
+  if (c.dead_end == DeadEnd::dead_angle) {
+    p["lambda"] = c.lambda;
+    p["lambda_form"] = std::string(cin::to_string(c.lambda_form));
+    p["dead_angle"] = std::string(to_string(c.dead_angle));
+    p["dead_angle_record"] = std::string(to_string(c.dead_angle_record));
   }
   return p;
 }
@@ -327,6 +393,17 @@ Config from_params(const Config& base, const Json& params) {
     else if (k == "h") c.h = num();
     else if (k == "tau_min") c.tau_min = num();
     else if (k == "bonus_edges") c.bonus_edges = parse_bonus_edges(str());
+    else if (k == "weight_norm") c.weight_norm = cin::parse_weight_norm(str());
+    else if (k == "tau_bounds") {
+      const std::string b = str();
+      if (b != "on" && b != "off") throw UsageError("tau_bounds must be on or off");
+      c.tau_bounds = b == "on";
+    } else if (k == "tau_lower") c.tau_lower = num();
+    else if (k == "tau_upper") c.tau_upper = num();
+    else if (k == "lambda") c.lambda = num();
+    else if (k == "lambda_form") c.lambda_form = cin::parse_lambda_form(str());
+    else if (k == "dead_angle") c.dead_angle = parse_dead_angle(str());
+    else if (k == "dead_angle_record") c.dead_angle_record = parse_dead_angle_record(str());
     else throw UsageError("unknown ant-colony parameter '" + k + "'");
   }
   validate(c);
@@ -336,6 +413,11 @@ Config from_params(const Config& base, const Json& params) {
 // ---- the run --------------------------------------------------------------------------------
 
 Run run(const planners::Request& req, const Config& cfg, rng::Stream& stream) {
+  return run(req, cfg, stream, {}, InitialMode::add);
+}
+
+Run run(const planners::Request& req, const Config& cfg, rng::Stream& stream,
+        std::span<const cin::EdgePheromone> initial, InitialMode initial_mode) {
   if (req.grid == nullptr) throw UsageError("plan request without a grid");
   const grid::Grid& g = *req.grid;
   require(g.in_bounds(req.start), "ant colony: start cell outside the grid");
@@ -369,6 +451,22 @@ Run run(const planners::Request& req, const Config& cfg, rng::Stream& stream) {
 
   // Pheromone on every ordered pair (cell, direction slot): tau[8 i + k].
   std::vector<double> tau(ucells * 8U, cfg.tau0);
+  for (const cin::EdgePheromone& e : initial) {
+    require(g.in_bounds(e.from) && g.in_bounds(e.to), "initial pheromone: edge outside the grid");
+    const std::int64_t dx = e.to.x - e.from.x;
+    const std::int64_t dy = e.to.y - e.from.y;
+    require(std::llabs(dx) <= 1 && std::llabs(dy) <= 1 && (dx != 0 || dy != 0),
+            "initial pheromone: an edge joins two 8-neighbours");
+    require(std::isfinite(e.tau) && e.tau > 0.0, "initial pheromone: values must be finite and > 0");
+    const std::size_t slot = static_cast<std::size_t>(g.index(e.from)) * 8U +
+                             static_cast<std::size_t>(direction(dx, dy));
+    tau[slot] = initial_mode == InitialMode::add ? cfg.tau0 + e.tau : e.tau;
+  }
+  // cin2021 dead-angle table (DeadEnd::dead_angle): kept for the whole run.
+  std::vector<std::uint8_t> dead_table(ucells, 0);
+  Json dead_table_cells = Json::array();
+  std::int64_t deadlocks = 0;
+  const bool exclude_table = cfg.dead_end == DeadEnd::dead_angle && cfg.dead_angle == DeadAngle::exclude;
 
   std::vector<std::uint8_t> tabu(ucells, 0);
   std::vector<std::int64_t> touched;
@@ -441,6 +539,7 @@ Run run(const planners::Request& req, const Config& cfg, rng::Stream& stream) {
         cand_index.clear();
         for (const Arc& arc : arcs) {
           if (tabu[static_cast<std::size_t>(arc.to)] != 0) continue;
+          if (exclude_table && dead_table[static_cast<std::size_t>(arc.to)] != 0) continue;
           const grid::Cell to = g.cell(arc.to);
           cand_index.push_back(arc.to);
           cand_cells.push_back(to);
@@ -460,6 +559,26 @@ Run run(const planners::Request& req, const Config& cfg, rng::Stream& stream) {
           if (cfg.dead_end == DeadEnd::die) {
             dead = true;
             break;
+          }
+          bool record = cfg.dead_end == DeadEnd::dead_angle && path.size() >= 2;
+          if (record && cfg.dead_angle_record == DeadAngleRecord::cul_de_sac) {
+            std::size_t open = 0;  // allowed moves into cells outside the table (tabu ignored)
+            for (const Arc& arc : arcs) open += dead_table[static_cast<std::size_t>(arc.to)] == 0 ? 1U : 0U;
+            record = open <= 1;
+          }
+          if (record) {
+            // cin2021 Sec. 5.5.2: record cur, penalise every allowed move into it (Eq. 35)
+            ++deadlocks;
+            const auto ucur = static_cast<std::size_t>(cur);
+            if (dead_table[ucur] == 0) {
+              dead_table[ucur] = 1;
+              dead_table_cells.push_back(Json::array({cur_cell.x, cur_cell.y}));
+            }
+            for (const Arc& arc : arcs) {
+              const std::size_t in_slot = static_cast<std::size_t>(arc.to) * 8U +
+                                          static_cast<std::size_t>(7 - arc.dir);
+              tau[in_slot] = cin::dead_angle_penalty(tau[in_slot], cfg.lambda, cfg.lambda_form);
+            }
           }
           path.pop_back();  // backtrack; the dead end stays tabu
           if (path.empty()) {
@@ -560,6 +679,38 @@ Run run(const planners::Request& req, const Config& cfg, rng::Stream& stream) {
     }
     rho_used.push_back(rho);
 
+    if (cfg.deposit == Deposit::weighted_best) {
+      // cin2021 Eq. 31-34: the global best is updated first (strict improvement), then every
+      // edge evaporates and the edges of pi_ib and pi_gb get the weighted deposits of Eq. 32-33.
+      const std::vector<std::int64_t>* gb = best_path.empty() ? nullptr : &best_path;
+      double L_gb = best_len;
+      if (survivors > 0 && L_n < best_len) {
+        gb = &paths[n_ant];
+        L_gb = L_n;
+      }
+      const cin::BestWeights w = cin::best_path_weights(t - 1, N, cfg.weight_norm);
+      std::vector<std::uint8_t> on(tau.size(), 0);  // bit 1: on pi_ib, bit 2: on pi_gb
+      const auto mark = [&](const std::vector<std::int64_t>& p, std::uint8_t bit) {
+        for (std::size_t s = 1; s < p.size(); ++s) {
+          const grid::Cell from = g.cell(p[s - 1]);
+          const grid::Cell to = g.cell(p[s]);
+          const int k = direction(to.x - from.x, to.y - from.y);
+          on[static_cast<std::size_t>(p[s - 1]) * 8U + static_cast<std::size_t>(k)] |= bit;
+          if (cfg.edge_sense == aco::EdgeSense::undirected)
+            on[static_cast<std::size_t>(p[s]) * 8U + static_cast<std::size_t>(7 - k)] |= bit;
+        }
+      };
+      if (survivors > 0) mark(paths[n_ant], 1);
+      if (gb != nullptr) mark(*gb, 2);
+      for (std::size_t e = 0; e < tau.size(); ++e) {
+        const double d = on[e] == 0 ? 0.0
+                                    : cin::weighted_best_deposit((on[e] & 1U) != 0, w.ib, L_n,
+                                                                 (on[e] & 2U) != 0, w.gb, L_gb, cfg.Q);
+        double v = aco::pheromone_update(tau[e], rho, d);
+        if (cfg.tau_bounds) v = std::clamp(v, cfg.tau_lower, cfg.tau_upper);
+        tau[e] = v;
+      }
+    } else {
     // ---- deposits: (slot, value) in ant order, then grouped per slot (stable) ----
     std::vector<std::pair<std::size_t, double>> deposits;
     for (std::size_t a = 0; a < m; ++a) {
@@ -615,6 +766,7 @@ Run run(const planners::Request& req, const Config& cfg, rng::Stream& stream) {
         tau[e] = aco::pheromone_update_elite(tau[e], rho, delta[e], on_best[e] != 0 ? bonus : 0.0,
                                              cfg.tau_min);
     }
+    }  // deposit modes other than weighted_best
 
     // ---- best so far (strict improvement: the earliest best is kept) ----
     if (survivors > 0 && L_n < best_len) {
@@ -646,6 +798,10 @@ Run run(const planners::Request& req, const Config& cfg, rng::Stream& stream) {
   extra["rho_per_iteration"] = std::move(rho_used);
   if (cfg.selection == Selection::pseudo_random) extra["q0_per_iteration"] = std::move(q0_used);
   extra["distinct_paths"] = out.distinct_paths.size();
+  if (cfg.dead_end == DeadEnd::dead_angle) {
+    extra["dead_angle_table"] = std::move(dead_table_cells);
+    extra["deadlocks"] = deadlocks;
+  }
   extra["draws"] = stream.doubles_drawn() - draws_before;
   res.extra = std::move(extra);
   return out;

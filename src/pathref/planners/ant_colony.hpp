@@ -5,24 +5,29 @@
 /// engine composes the pure equation functions (equations/aco.hpp, aco_adaptive.hpp, corner.hpp,
 /// pseudo_random.hpp) and the pinned random stream (rng/); it implements no equation itself.
 /// A Config picks one implementation of each concept:
-///   heuristic eta      inverse_distance (Shi Eq. 3) | goal_directed (Shi Eq. 12)
+///   heuristic eta      inverse_distance (Shi Eq. 3, cin2021 Eq. 30) | goal_directed (Shi Eq. 12)
+///                      | goal_inverse (cin2021 Eq. 30 alternative, 1/d_jG)
 ///   selection          proportional (Shi Eq. 2, Han Eq. 1) | pseudo_random (Han Eq. 4 + Eq. 5)
 ///   corner factor      none | han (Han Eq. 1-3, omega^gamma)
 ///   evaporation        constant | shi_adaptive (Shi Eq. 13, rho_min 0 = IACO*) | han_stepped (Eq. 7)
 ///   deposit            ant_cycle (Shi Eq. 5-7) | han_elite (Han Eq. 6)
-///   dead end           die | backtrack
+///                      | weighted_best (cin2021 Eq. 31-34: iteration-best and global-best)
+///   dead end           die | backtrack | dead_angle (cin2021 Eq. 35: table, penalty, backtrack)
+/// and an optional initial pheromone (cin2021 Eq. 28, the GA-to-ACO conversion of hga-aco-cin);
 /// and the run is a pure function of (request, config, the stream's state).
 /// Source: Shi et al. 2022, doi:10.3389/fbioe.2022.905983, Sec. 4.1 and 4.4.1; Han (IJACSA),
 /// Sec. III.A; Dorigo, Maniezzo & Colorni (1996), doi:10.1109/3477.484436 (Ant System).
 /// Spec: spec/shi2022-aco.md (shi2022.plan.aco, shi2022.plan.iaco), spec/han-iaco.md
-/// (han.plan.iaco, han.plan.astar). The spec states the algorithm step by step and the exact
+/// (han.plan.iaco, han.plan.astar), spec/cin2021-hga-aco.md (cin2021.plan.aco). The spec states the algorithm step by step and the exact
 /// order of the random draws, so that a MATLAB/Python implementation replays a run draw for draw.
 #include <cstdint>
+#include <span>
 #include <string_view>
 #include <vector>
 
 #include "pathref/equations/aco.hpp"
 #include "pathref/equations/aco_adaptive.hpp"
+#include "pathref/equations/cin2021.hpp"
 #include "pathref/equations/corner.hpp"
 #include "pathref/grid/grid.hpp"
 #include "pathref/planners/planner.hpp"
@@ -36,7 +41,8 @@ using Json = planners::Json;
 enum class Eta {
   inverse_distance,  ///< 1 / d_ij (Shi Eq. 3; aco::eta_inverse_distance)
   goal_directed,     ///< 1 / (d_ij + d_jE) (Shi Eq. 12; aco::eta_goal_directed)
-  goal_inverse,      ///< 1 / d_jE, eta_goal at E (classic script; aco::eta_goal_inverse)
+  goal_inverse,      ///< 1 / d_jE, eta_goal at E (aco::eta_goal_inverse): the classic script's
+                     ///< eta (eta_goal 100), cin2021 Eq. 30's alternative d_GG := 1/2 (eta_goal 2)
 };
 /// How an ant picks its next cell.
 enum class Selection {
@@ -58,11 +64,19 @@ enum class Evaporation {
 enum class Deposit {
   ant_cycle,  ///< Shi Eq. 5-7: tau = (1 - rho) tau + sum_k Q / L_k
   han_elite,  ///< Han Eq. 6: as ant_cycle, plus the elite bonus, floored at tau_min
+  weighted_best,  ///< cin2021 Eq. 31-34: iteration-best and global-best deposits, weights N - t, t
 };
 /// An ant with no allowed neighbour (spec/shi2022.md "Options for the planners", `dead_end`).
 enum class DeadEnd {
   die,        ///< the ant stops; its path is discarded and it deposits nothing
   backtrack,  ///< the ant steps back (the dead end stays tabu); out of the start it dies
+  dead_angle, ///< cin2021 Sec. 5.5.2: record the cell in the dead-angle table, penalise the
+              ///< edges into it (Eq. 35), then backtrack; stuck at the start it dies
+};
+/// cin2021 dead-angle table: whether table cells leave the allowed sets (option `dead_angle`).
+enum class DeadAngle {
+  exclude,        ///< never visited again (default; the paper's "will not go to any deadlock point")
+  penalise_only,  ///< only the Eq. 35 penalty; the cells stay allowed
 };
 /// Han Eq. 4: when the roulette draw u is taken (spec/han.md options, `draw_u`).
 enum class DrawU {
@@ -90,6 +104,16 @@ enum class RhoTiming {
 [[nodiscard]] std::string_view to_string(DrawU v) noexcept;
 [[nodiscard]] BonusEdges parse_bonus_edges(std::string_view name);
 [[nodiscard]] std::string_view to_string(BonusEdges v) noexcept;
+/// cin2021 dead-angle table: which deadlock points are recorded (option `dead_angle_record`).
+enum class DeadAngleRecord {
+  cul_de_sac,  ///< a stuck cell with at most one allowed move into a cell outside the table
+               ///< (a dead end of the map itself, e.g. the bottom of a concave trap; default)
+  any_stuck,   ///< every cell where an ant is stuck, also when only its own tabu cells surround it
+};
+[[nodiscard]] DeadAngleRecord parse_dead_angle_record(std::string_view name);
+[[nodiscard]] std::string_view to_string(DeadAngleRecord v) noexcept;
+[[nodiscard]] DeadAngle parse_dead_angle(std::string_view name);
+[[nodiscard]] std::string_view to_string(DeadAngle v) noexcept;
 [[nodiscard]] RhoTiming parse_rho_timing(std::string_view name);
 [[nodiscard]] std::string_view to_string(RhoTiming v) noexcept;
 
@@ -139,6 +163,18 @@ struct Config {
   double h = 1.0;
   double tau_min = 0.01;
   BonusEdges bonus_edges = BonusEdges::best_path;
+
+  // ---- cin2021 weighted best deposit (Eq. 31-34) ----
+  cin::WeightNorm weight_norm = cin::WeightNorm::raw;
+  bool tau_bounds = false;   ///< clamp tau to [tau_lower, tau_upper] after each update
+  double tau_lower = 0.001;
+  double tau_upper = 100.0;
+
+  // ---- cin2021 dead-angle table (Eq. 35) ----
+  double lambda = 0.5;
+  cin::LambdaForm lambda_form = cin::LambdaForm::lambda;
+  DeadAngle dead_angle = DeadAngle::exclude;
+  DeadAngleRecord dead_angle_record = DeadAngleRecord::cul_de_sac;
 };
 
 /// Defaults of planner `aco`: the Config defaults above (Table 1; tau0 = 8, rho = 0.9).
@@ -161,6 +197,11 @@ struct Config {
 /// and the chosen constants of han.params (gamma, omega_i, epsilon, h, Q, tau0 = 1, tau_min,
 /// a, b, rho_min). Spec: han.plan.iaco
 [[nodiscard]] Config han_iaco();
+/// Defaults of planner `aco-cin` (spec cin2021.plan.aco): 30 ants, 50 iterations, alpha 1,
+/// beta 2, rho 0.3, Q 1, tau0 (tau_C) 0.1, eta inverse_distance, deposit weighted_best,
+/// dead_end dead_angle with lambda 0.5 -- the project's defaults of the lost Sec. 5.6
+/// parameters, not the paper's. Spec: cin2021.plan.aco
+[[nodiscard]] Config cin_aco();
 
 /// The planner parameters (names as in the spec's parameter tables) of `base`'s components:
 /// only the settings that the components of `base` use are listed, so that params_used lists
@@ -199,7 +240,7 @@ struct Run {
 /// exactly the draws the spec lists). req.params and req.seed are ignored: `config` is used as
 /// given (a planner builds it with from_params; a hybrid builds it directly).
 /// Source: Shi et al. 2022 Sec. 4.1, 4.4.1; Han (IJACSA) Sec. III.A.
-/// Spec: shi2022.plan.aco, shi2022.plan.iaco, han.plan.iaco
+/// Spec: shi2022.plan.aco, shi2022.plan.iaco, han.plan.iaco, cin2021.plan.aco
 /// Pre: req.grid set (UsageError); start, goal in bounds and free (DomainError); the config in
 /// its domain (DomainError: ants, iterations >= 1; alpha, beta >= 0; Q, tau0 > 0; 0 < rho < 1;
 /// 0 <= rho_min < 1; ...).
@@ -208,6 +249,21 @@ struct Run {
 /// best_per_iteration non-increasing; start == goal gives the one-cell path, no iteration and
 /// no draw.
 [[nodiscard]] Run run(const planners::Request& req, const Config& config, rng::Stream& stream);
+
+/// How an initial pheromone list combines with tau0 (cin2021.eq28 option `conversion`).
+enum class InitialMode {
+  add,      ///< tau(0) = tau0 + tau^G on the listed edges (default)
+  replace,  ///< tau(0) = tau^G on the listed edges
+};
+[[nodiscard]] InitialMode parse_initial_mode(std::string_view name);
+[[nodiscard]] std::string_view to_string(InitialMode v) noexcept;
+
+/// run() starting from tau0 on every edge except the listed directed edges, which start at
+/// tau0 + e.tau (add) or e.tau (replace); an edge between cells that are not 8-neighbours is a
+/// DomainError. The draws are those of run(). hga-aco-cin passes the GA conversion of
+/// cin2021 Eq. 28 (cin::converted_pheromone). Spec: cin2021.plan.aco, cin2021.plan.hga-aco
+[[nodiscard]] Run run(const planners::Request& req, const Config& config, rng::Stream& stream,
+                      std::span<const cin::EdgePheromone> initial, InitialMode mode);
 
 }  // namespace pathref::ant_colony
 
@@ -224,6 +280,8 @@ namespace pathref::planners {
 [[nodiscard]] Planner make_aco_classic_planner();
 /// Planner "iaco-han": Han (IJACSA) Eq. 1-7. Spec: han.plan.iaco
 [[nodiscard]] Planner make_iaco_han_planner();
+/// Planner "aco-cin": the optimised ACO of cin2021 Sec. 5.5 (Eq. 29-35). Spec: cin2021.plan.aco
+[[nodiscard]] Planner make_aco_cin_planner();
 /// Planner "astar-han": 8-direction A* (search::astar) with the Chebyshev heuristic of Han
 /// Eq. 8; param h_form = "chebyshev" (default) | "octile" (the reading of han.eq8). No draws.
 /// Source: Han (IJACSA) Sec. III.B, Eq. (8). Spec: han.plan.astar

@@ -67,13 +67,32 @@ bool better(const Individual& x, const Individual& y, ResultBy by) {
 
 }  // namespace
 
+Crossover parse_crossover(std::string_view n) {
+  if (n == "common_gene") return Crossover::common_gene;
+  if (n == "cin") return Crossover::cin;
+  throw UsageError("unknown crossover '" + std::string(n) + "' (expected common_gene or cin)");
+}
+std::string_view to_string(Crossover v) noexcept { return v == Crossover::common_gene ? "common_gene" : "cin"; }
+Init parse_init(std::string_view n) {
+  if (n == "rows") return Init::rows;
+  if (n == "walk") return Init::walk;
+  throw UsageError("unknown init '" + std::string(n) + "' (expected rows or walk)");
+}
+std::string_view to_string(Init v) noexcept { return v == Init::rows ? "rows" : "walk"; }
+
 Fitness parse_fitness(std::string_view n) {
   if (n == "inverse_length") return Fitness::inverse_length;
   if (n == "weighted") return Fitness::weighted;
-  unknown("fitness", n, "inverse_length or weighted");
+  if (n == "cin") return Fitness::cin;
+  unknown("fitness", n, "inverse_length, weighted or cin");
 }
 std::string_view to_string(Fitness v) noexcept {
-  return v == Fitness::inverse_length ? "inverse_length" : "weighted";
+  switch (v) {
+    case Fitness::inverse_length: return "inverse_length";
+    case Fitness::weighted: return "weighted";
+    case Fitness::cin: return "cin";
+  }
+  return "?";
 }
 Probabilities parse_probabilities(std::string_view n) {
   if (n == "fixed") return Probabilities::fixed;
@@ -92,10 +111,16 @@ std::string_view to_string(Scale v) noexcept { return v == Scale::printed ? "pri
 CrossoverKeep parse_crossover_keep(std::string_view n) {
   if (n == "children") return CrossoverKeep::children;
   if (n == "best_two") return CrossoverKeep::best_two;
-  unknown("crossover_keep", n, "children or best_two");
+  if (n == "best_two_fitness") return CrossoverKeep::best_two_fitness;
+  unknown("crossover_keep", n, "children, best_two or best_two_fitness");
 }
 std::string_view to_string(CrossoverKeep v) noexcept {
-  return v == CrossoverKeep::children ? "children" : "best_two";
+  switch (v) {
+    case CrossoverKeep::children: return "children";
+    case CrossoverKeep::best_two: return "best_two";
+    case CrossoverKeep::best_two_fitness: return "best_two_fitness";
+  }
+  return "?";
 }
 Loops parse_loops(std::string_view n) {
   if (n == "keep") return Loops::keep;
@@ -145,10 +170,18 @@ std::string_view to_string(CrossoverPoints v) noexcept {
 }
 Mutation parse_mutation(std::string_view n) {
   if (n == "point") return Mutation::point;
+  if (n == "multidirectional") return Mutation::multidirectional;
   if (n == "segment") return Mutation::segment;
-  unknown("mutation", n, "point or segment");
+  unknown("mutation", n, "point, multidirectional or segment");
 }
-std::string_view to_string(Mutation v) noexcept { return v == Mutation::point ? "point" : "segment"; }
+std::string_view to_string(Mutation v) noexcept {
+  switch (v) {
+    case Mutation::point: return "point";
+    case Mutation::multidirectional: return "multidirectional";
+    case Mutation::segment: return "segment";
+  }
+  return "point";
+}
 
 Config shi_ga() { return Config{}; }
 
@@ -187,8 +220,38 @@ Config shi_iga_nomax() {
   return c;
 }
 
+Config cin_ga() {
+  Config c;
+  c.population = 50;
+  c.generations = 50;
+  c.fitness = Fitness::cin;
+  c.weights = ga::FitnessWeights{1.0, 0.1, 0.0};
+  c.pc = 0.8;
+  c.pm = 0.2;
+  c.init = Init::walk;
+  c.crossover = Crossover::cin;
+  c.crossover_keep = CrossoverKeep::best_two_fitness;
+  c.mutation = Mutation::multidirectional;
+  c.research = ga::Research::greedy;
+  c.loops = Loops::cut;
+  c.result_by = ResultBy::fitness;
+  // Pinned to the chain-repair readings ga-cin was specified and characterised with (the Shi
+  // planners' defaults shift / repair / inverse_total_plus_one of issue 11 are not cin2021's).
+  c.init_reject = ga::InitReject::blocked;
+  c.illegal_step = ga::IllegalStep::reject;
+  c.smoothness = ga::SmoothnessReading::per_node;
+  return c;
+}
+
+namespace {
+bool uses_cin_options(const Config& c) {
+  return c.fitness == Fitness::cin || c.crossover != Crossover::common_gene || c.init != Init::rows ||
+         c.mutation == Mutation::multidirectional || c.crossover_keep == CrossoverKeep::best_two_fitness;
+}
+}  // namespace
+
 Json to_params(const Config& c) {
-  return Json{
+  Json p = Json{
       {"population", c.population},
       {"generations", c.generations},
       {"fitness", std::string(to_string(c.fitness))},
@@ -223,6 +286,17 @@ Json to_params(const Config& c) {
       {"mutation", std::string(to_string(c.mutation))},
       {"mutation_attempts", c.mutation_attempts},
   };
+  if (uses_cin_options(c)) {
+    p["init"] = std::string(to_string(c.init));
+    p["crossover"] = std::string(to_string(c.crossover));
+    p["mutation"] = std::string(to_string(c.mutation));
+    p["research"] = std::string(ga::to_string(c.research));
+    p["corner_penalties"] =
+        Json::array({c.corner_penalties.c135, c.corner_penalties.c90, c.corner_penalties.c45});
+    p["f2_guard"] = std::string(cin::to_string(c.f2_guard));
+    p["angle"] = std::string(cin::to_string(c.angle));
+  }
+  return p;
 }
 
 void validate(const Config& c) {
@@ -245,6 +319,7 @@ void validate(const Config& c) {
           "elite_fraction must lie in (0, 1]");
   require(c.mutation_attempts >= 1 && c.mutation_attempts <= 100000000,
           "mutation_attempts must lie in [1, 10^8]");
+  static_cast<void>(cin::corner_penalty(180.0, c.corner_penalties));  // cin2021.eq24's domain
 }
 
 Config from_params(const Config& base, const Json& p) {
@@ -297,6 +372,18 @@ Config from_params(const Config& base, const Json& p) {
   if (p.contains("crossover_points")) c.crossover_points = parse_crossover_points(str("crossover_points"));
   if (p.contains("mutation")) c.mutation = parse_mutation(str("mutation"));
   if (p.contains("mutation_attempts")) c.mutation_attempts = integer("mutation_attempts");
+  if (p.contains("init")) c.init = parse_init(str("init"));
+  if (p.contains("crossover")) c.crossover = parse_crossover(str("crossover"));
+  if (p.contains("research")) c.research = ga::parse_research(str("research"));
+  if (p.contains("corner_penalties")) {
+    const Json& v = p.at("corner_penalties");
+    if (!v.is_array() || v.size() != 3 || !v[0].is_number() || !v[1].is_number() ||
+        !v[2].is_number())
+      throw UsageError("corner_penalties must be an array of three numbers [c135, c90, c45]");
+    c.corner_penalties = cin::CornerPenalties{v[0].get<double>(), v[1].get<double>(), v[2].get<double>()};
+  }
+  if (p.contains("f2_guard")) c.f2_guard = cin::parse_f2_guard(str("f2_guard"));
+  if (p.contains("angle")) c.angle = cin::parse_angle_reading(str("angle"));
   validate(c);
   return c;
 }
@@ -305,6 +392,11 @@ double fitness_of(const grid::Grid& g, std::span<const grid::Cell> path, const C
   require(path.size() >= 2, "a path of one node has no fitness");
   const double f1 = ga::inverse_length(metrics::path_length(path));
   if (c.fitness == Fitness::inverse_length) return f1;
+  if (c.fitness == Fitness::cin) {
+    // cin2021 Eq. 26 = shi2022.eq14 with c = 0 (one function, ga::weighted_fitness)
+    const double f2 = cin::smoothness_fitness(path, c.corner_penalties, c.f2_guard, c.angle);
+    return ga::weighted_fitness(f1, f2, 0.0, ga::FitnessWeights{c.weights.a, c.weights.b, 0.0});
+  }
   const double f2 = ga::smoothness_factor(path, c.smoothness, c.penalties);
   const double f3 = ga::safety_factor(g, path, c.safety);
   return ga::weighted_fitness(f1, f2, f3, c.weights);
@@ -377,6 +469,24 @@ class PairVerdicts {
 };
 
 }  // namespace
+
+std::pair<Individual, Individual> keep_two(Individual a, Individual b, Individual c1, Individual c2,
+                                          CrossoverKeep by) {
+  if (by == CrossoverKeep::children) return {std::move(c1), std::move(c2)};
+  std::vector<Individual> four;
+  four.reserve(4);
+  four.push_back(std::move(a));
+  four.push_back(std::move(b));
+  four.push_back(std::move(c1));
+  four.push_back(std::move(c2));
+  if (by == CrossoverKeep::best_two_fitness)
+    std::stable_sort(four.begin(), four.end(),
+                     [](const Individual& x, const Individual& y) { return x.fitness > y.fitness; });
+  else
+    std::stable_sort(four.begin(), four.end(),
+                     [](const Individual& x, const Individual& y) { return x.length < y.length; });
+  return {std::move(four[0]), std::move(four[1])};
+}
 
 InitOutcome initial_paths(const grid::Grid& g, grid::Cell start, grid::Cell goal,
                           grid::CornerPolicy policy, const Config& c, rng::Stream& stream,
@@ -460,6 +570,32 @@ Json population_extra(std::int64_t size, std::int64_t from_init, std::int64_t fr
               {"init_chains", init.chains}};
 }
 
+InitOutcome initial_walks(const grid::Grid& g, grid::Cell start, grid::Cell goal,
+                          grid::CornerPolicy policy, rng::Stream& stream, std::int64_t count) {
+  require(g.in_bounds(start) && g.in_bounds(goal), "GA: start or goal outside the grid");
+  require(g.free(start) && g.free(goal), "GA: start or goal blocked");
+  require(!(start == goal), "GA: start == goal has no initial walk");
+  InitOutcome out;
+  for (std::int64_t a = 0; a < count; ++a) {
+    ga::Walk w = ga::research_walk(g, start, goal, {}, policy, ga::Research::random, stream, true);
+    ++out.chains;
+    if (!w.ok) {
+      out.failure = "unreachable";
+      return out;
+    }
+    out.paths.push_back(std::move(w.cells));
+  }
+  out.ok = true;
+  return out;
+}
+
+InitOutcome initial_population(const grid::Grid& g, grid::Cell start, grid::Cell goal,
+                               grid::CornerPolicy policy, const Config& c, rng::Stream& stream,
+                               std::int64_t count) {
+  return c.init == Init::walk ? initial_walks(g, start, goal, policy, stream, count)
+                              : initial_paths(g, start, goal, policy, c, stream, count);
+}
+
 Evolution evolve(const grid::Grid& g, grid::CornerPolicy policy, const Config& c,
                  rng::Stream& stream, std::vector<Individual> pop) {
   require(!pop.empty(), "GA: empty population");
@@ -499,28 +635,34 @@ Evolution evolve(const grid::Grid& g, grid::CornerPolicy policy, const Config& c
       const std::vector<ga::CrossPoint> pts =
           script ? ga::crossover_points_any(pool[p].path, pool[p + 1].path)
                  : ga::crossover_points(pool[p].path, pool[p + 1].path);
-      if (pts.empty()) continue;
-      const double u = stream.next_double();
-      const ga::CrossPoint pt = pts[script ? ga::round_choice(u, pts.size())
-                                           : rng::uniform_index(u, pts.size())];
-      ga::Children ch = ga::crossover_at(pool[p].path, pool[p + 1].path, pt);
+      ga::Children ch;
+      if (!pts.empty()) {
+        const double u = stream.next_double();
+        const ga::CrossPoint pt = pts[script ? ga::round_choice(u, pts.size())
+                                             : rng::uniform_index(u, pts.size())];
+        ch = ga::crossover_at(pool[p].path, pool[p + 1].path, pt);
+      } else {
+        // cin2021.op.crossover, Figure 8a: random interior cut genes, chains repaired
+        const std::size_t na = pool[p].path.size();
+        const std::size_t nb = pool[p + 1].path.size();
+        if (c.crossover != Crossover::cin || na < 3 || nb < 3) continue;
+        const std::size_t k = 1 + rng::uniform_index(stream.next_double(), na - 2);
+        const std::size_t j = 1 + rng::uniform_index(stream.next_double(), nb - 2);
+        ga::CutChildren cut = ga::crossover_cut(g, pool[p].path, pool[p + 1].path, k, j, policy,
+                                                c.mid_rounding, c.init_reject, c.illegal_step);
+        if (!cut.feasible) continue;
+        ch = std::move(cut.children);
+      }
       if (c.loops == Loops::cut) {
         ch.first = ga::remove_loops(ch.first);
         ch.second = ga::remove_loops(ch.second);
       }
       Individual c1 = make_individual(g, std::move(ch.first), c, Origin::crossover, i);
       Individual c2 = make_individual(g, std::move(ch.second), c, Origin::crossover, i);
-      if (c.crossover_keep == CrossoverKeep::children) {
-        pool[p] = std::move(c1);
-        pool[p + 1] = std::move(c2);
-      } else {
-        std::vector<Individual> four{pool[p], pool[p + 1], std::move(c1), std::move(c2)};
-        std::stable_sort(four.begin(), four.end(), [](const Individual& x, const Individual& y) {
-          return x.length < y.length;
-        });
-        pool[p] = std::move(four[0]);
-        pool[p + 1] = std::move(four[1]);
-      }
+      auto kept = keep_two(std::move(pool[p]), std::move(pool[p + 1]), std::move(c1), std::move(c2),
+                           c.crossover_keep);
+      pool[p] = std::move(kept.first);
+      pool[p + 1] = std::move(kept.second);
     }
     // IHA step 7: elite retention over parents ++ children, keeping the population size.
     // (pop is not read again in this generation: its individuals are moved, not copied.)
@@ -555,6 +697,21 @@ Evolution evolve(const grid::Grid& g, grid::CornerPolicy policy, const Config& c
         continue;
       }
       const std::size_t k = 1 + rng::uniform_index(stream.next_double(), n - 2);
+      if (c.mutation == Mutation::multidirectional) {
+        // cin2021.op.mutation: mutant A (towards S) then B (from G); the fitter replaces.
+        ga::Mutants mu = ga::multidirectional_mutants(g, pool[a].path, k, policy, c.research, stream);
+        if (mu.a.empty() && mu.b.empty()) continue;
+        if (mu.a.empty()) {
+          pool[a] = make_individual(g, std::move(mu.b), c, Origin::mutation, i);
+        } else if (mu.b.empty()) {
+          pool[a] = make_individual(g, std::move(mu.a), c, Origin::mutation, i);
+        } else {
+          Individual A = make_individual(g, std::move(mu.a), c, Origin::mutation, i);
+          Individual B = make_individual(g, std::move(mu.b), c, Origin::mutation, i);
+          pool[a] = B.fitness > A.fitness ? std::move(B) : std::move(A);
+        }
+        continue;
+      }
       const std::vector<grid::Cell> cand = ga::mutation_candidates(g, pool[a].path, k, policy);
       if (cand.empty()) continue;
       std::vector<grid::Cell> path = std::move(pool[a].path);  // pool[a] is replaced below
@@ -575,6 +732,7 @@ Evolution evolve(const grid::Grid& g, grid::CornerPolicy policy, const Config& c
     ev.best_per_generation.push_back(ev.best.length);
     ev.mean_per_generation.push_back(sum / static_cast<double>(S));
   }
+  ev.final_population = std::move(pop);
   return ev;
 }
 
@@ -593,7 +751,7 @@ planners::Result run(const planners::Request& req, const Config& c, rng::Stream&
     r.extra = Json{{"best_generation", 0}, {"best_origin", "init"}, {"draws", 0}, {"init_chains", 0}};
     return r;
   }
-  const InitOutcome init = initial_paths(g, req.start, req.goal, req.policy, c, stream, c.population);
+  const InitOutcome init = initial_population(g, req.start, req.goal, req.policy, c, stream, c.population);
   if (!init.ok) {
     r.extra = population_extra(0, 0, 0, init);
     r.extra["failure"] = init.failure;
@@ -661,6 +819,13 @@ Planner make_ga_classic_planner() {
               "fitness 1/length + 1/smoothness, segment mutation; NP 200, 50 generations, pc 0.8, "
               "pm 0.2; corner policy always by default), spec/classic.md",
               genetic::classic_ga());
+}
+
+Planner make_ga_cin_planner() {
+  return make("ga-cin",
+              "optimised GA of cin2021 Sec. 5.3 (Eq. 20-27: a f1 + b f2 with corner penalties, "
+              "cut-gene crossover, multidirectional mutation), spec/cin2021-hga-aco.md",
+              genetic::cin_ga());
 }
 
 Planner make_iga_shi_nomax_planner() {

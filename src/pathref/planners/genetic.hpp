@@ -13,8 +13,10 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
+#include "pathref/equations/cin2021.hpp"
 #include "pathref/equations/ga.hpp"
 #include "pathref/equations/ga_operators.hpp"
 #include "pathref/grid/grid.hpp"
@@ -29,6 +31,7 @@ using planners::Json;
 enum class Fitness {
   inverse_length,  ///< Eq. 10: 1 / length (single GA)
   weighted,        ///< Eq. 14-18: a fit1 + b fit2 + c fit3 (improved GA)
+  cin,             ///< cin2021 Eq. 20-26: a f1 + b f2, f2 of the corner penalties (ga-cin)
 };
 /// Option `ga_probabilities` of spec/shi2022.md "Options for the planners".
 enum class Probabilities {
@@ -44,6 +47,17 @@ enum class Scale {
 enum class CrossoverKeep {
   children,  ///< both children replace the parents (Figure 3)
   best_two,  ///< the two shortest of (parent a, parent b, child 1, child 2), ties in that order
+  best_two_fitness,  ///< the two fittest of (a, b, c1, c2), ties in that order (cin2021.op.crossover)
+};
+/// Option `crossover`: what happens to a pair without a common gene.
+enum class Crossover {
+  common_gene,  ///< no crossover (Shi Figure 3: only at a common node)
+  cin,          ///< random cut genes and the chain repair (cin2021 Figure 8a, ga::crossover_cut)
+};
+/// Option `init`: how the initial population is made.
+enum class Init {
+  rows,  ///< Shi Sec. 4.2: one random free cell per row, chains repaired (initial_paths)
+  walk,  ///< cin2021 (pathref reading): random depth-first walks S -> G (initial_walks)
 };
 /// Option `loops` (spec shi2022.plan.ga step 5): what happens to a child that visits a cell twice.
 enum class Loops {
@@ -74,7 +88,8 @@ enum class CrossoverPoints {
 };
 /// Option `mutation` (step 5.5).
 enum class Mutation {
-  point,    ///< Shi Figure 4: one gene replaced by a candidate (shi2022.op.mutation)
+  point,             ///< Shi Figure 4: one gene replaced by a candidate (shi2022.op.mutation)
+  multidirectional,  ///< cin2021 Figure 9: mutants A and B re-searched, the fitter kept
   segment,  ///< the classic script: the genes between two random positions are replaced by the
             ///< chain repair of their outer neighbours, redrawn until it repairs
 };
@@ -101,6 +116,10 @@ enum class Origin { init, aco, crossover, mutation };
 [[nodiscard]] std::string_view to_string(Selection v) noexcept;
 [[nodiscard]] CrossoverPoints parse_crossover_points(std::string_view name);
 [[nodiscard]] std::string_view to_string(CrossoverPoints v) noexcept;
+[[nodiscard]] Crossover parse_crossover(std::string_view name);
+[[nodiscard]] std::string_view to_string(Crossover v) noexcept;
+[[nodiscard]] Init parse_init(std::string_view name);
+[[nodiscard]] std::string_view to_string(Init v) noexcept;
 [[nodiscard]] Mutation parse_mutation(std::string_view name);
 [[nodiscard]] std::string_view to_string(Mutation v) noexcept;
 
@@ -138,6 +157,13 @@ struct Config {
   CrossoverPoints crossover_points = CrossoverPoints::interior;
   Mutation mutation = Mutation::point;
   std::int64_t mutation_attempts = 100000;  ///< segment mutation: position pairs tried, >= 1
+  // ---- cin2021 options (spec/cin2021-hga-aco.md); listed by to_params when any is not Shi's ----
+  Init init = Init::rows;
+  Crossover crossover = Crossover::common_gene;
+  ga::Research research = ga::Research::greedy;
+  cin::CornerPenalties corner_penalties{};  ///< c135, c90, c45 of cin2021 Eq. 24
+  cin::F2Guard f2_guard = cin::F2Guard::one_plus;
+  cin::AngleReading angle = cin::AngleReading::arccos;
 };
 
 /// Defaults of planner `ga` (spec shi2022.plan.ga): the Config defaults.
@@ -152,6 +178,11 @@ struct Config {
 /// init_retry none, selection sorted, crossover_points script, mutation segment.
 /// Spec: classic.plan.ga
 [[nodiscard]] Config classic_ga();
+/// Defaults of planner `ga-cin` (spec cin2021.plan.ga): fitness cin (a = 1, b = 0.1), crossover
+/// cin with crossover_keep best_two_fitness, mutation multidirectional (research greedy), loops
+/// cut, population 50, generations 50, pc 0.8, pm 0.2 -- the project's defaults of the lost
+/// Sec. 5.6 parameters, not the paper's. Spec: cin2021.plan.ga
+[[nodiscard]] Config cin_ga();
 
 /// The planner parameters of a config (names of spec/shi2022-ga.md "Parameters"); every setting
 /// is listed. `elitist` is not a parameter (it is fixed by the planner).
@@ -179,6 +210,15 @@ struct Individual {
 /// An individual with its length and fitness computed.
 [[nodiscard]] Individual make_individual(const grid::Grid& g, std::vector<grid::Cell> path,
                                          const Config& c, Origin origin, std::int64_t born);
+
+/// The crossover's "keep" step for one pair: `children` returns (c1, c2); `best_two` the two
+/// shortest of (a, b, c1, c2) and `best_two_fitness` the two fittest (cin2021.op.crossover: "select
+/// the best individuals from the parent and offspring"), both by a stable sort (ties in the order
+/// a, b, c1, c2). Spec: shi2022.plan.ga (step 3), cin2021.op.crossover.
+/// Post (best_two_fitness): max(fitness of the result) == max(fitness of the four): the pair's
+/// best is never lost.
+[[nodiscard]] std::pair<Individual, Individual> keep_two(Individual a, Individual b, Individual c1,
+                                                         Individual c2, CrossoverKeep by);
 
 /// What initial_paths returns.
 struct InitOutcome {
@@ -214,6 +254,18 @@ inline constexpr std::int64_t init_verdict_max_entries = std::int64_t{1} << 20;
 /// (chains drawn). Spec: shi2022.plan.ga, shi2022.plan.hybrid, shi2022.plan.iha.
 [[nodiscard]] Json population_extra(std::int64_t size, std::int64_t from_init, std::int64_t from_aco,
                                     const InitOutcome& init);
+/// `count` initial paths by random depth-first walks (option init = walk, spec cin2021.plan.ga
+/// "Initialisation"): individual a = ga::research_walk(start -> goal, nothing avoided, random,
+/// backtrack) drawing from `stream`; failure "unreachable" when a walk fails (then every walk
+/// would). Spec: cin2021.plan.ga. Pre: start != goal, both in bounds and free (DomainError).
+[[nodiscard]] InitOutcome initial_walks(const grid::Grid& g, grid::Cell start, grid::Cell goal,
+                                        grid::CornerPolicy policy, rng::Stream& stream,
+                                        std::int64_t count);
+
+/// initial_paths or initial_walks by c.init. Spec: shi2022.plan.ga, cin2021.plan.ga.
+[[nodiscard]] InitOutcome initial_population(const grid::Grid& g, grid::Cell start, grid::Cell goal,
+                                             grid::CornerPolicy policy, const Config& c,
+                                             rng::Stream& stream, std::int64_t count);
 
 /// What evolve returns.
 struct Evolution {
@@ -221,6 +273,7 @@ struct Evolution {
   std::int64_t best_generation = 0;         ///< generation that first held it (0 = initial)
   std::vector<double> best_per_generation;  ///< length of the best-so-far after generation i
   std::vector<double> mean_per_generation;  ///< mean length of the population after generation i
+  std::vector<Individual> final_population;  ///< the population after the last generation
 };
 
 /// The generation loop (spec shi2022.plan.ga steps 2-5; with c.elitist, shi2022.plan.iha steps
@@ -230,10 +283,10 @@ struct Evolution {
 [[nodiscard]] Evolution evolve(const grid::Grid& g, grid::CornerPolicy policy, const Config& c,
                                rng::Stream& stream, std::vector<Individual> population);
 
-/// A whole single-GA / improved-GA run (spec shi2022.plan.ga / shi2022.plan.iga): initial
-/// population, then evolve. Result.extra: best_generation, best_origin, draws, init_chains,
-/// failure (when !found).
-/// Spec: shi2022.plan.ga, shi2022.plan.iga
+/// A whole single-GA / improved-GA / ga-cin run (spec shi2022.plan.ga / shi2022.plan.iga /
+/// cin2021.plan.ga): initial population, then evolve. Result.extra: best_generation,
+/// best_origin, draws, init_chains, failure (when !found).
+/// Spec: shi2022.plan.ga, shi2022.plan.iga, cin2021.plan.ga
 /// Pre: req.grid set (UsageError); start, goal in bounds and free (DomainError).
 /// Post: found => path valid under req.policy, length = metrics::path_length(path).
 [[nodiscard]] planners::Result run(const planners::Request& req, const Config& c,
@@ -252,5 +305,8 @@ namespace pathref::planners {
 /// Planner "ga-classic": the classic MATLAB GA grid script's defaults, default corner policy
 /// always. Spec: classic.plan.ga
 [[nodiscard]] Planner make_ga_classic_planner();
+/// Planner "ga-cin": the optimised GA of cin2021 Sec. 5.3 (Eq. 20-27, Figures 8-9).
+/// Spec: cin2021.plan.ga
+[[nodiscard]] Planner make_ga_cin_planner();
 
 }  // namespace pathref::planners

@@ -182,6 +182,96 @@ ImprovedConfig from_params(const ImprovedConfig& base, const Json& params) {
   return c;
 }
 
+Json to_params(const CinConfig& c) {
+  Json p = prefixed(ant_colony::to_params(c.aco));
+  const Json ga = genetic::to_params(c.ga);
+  for (const auto& [k, v] : ga.items()) p[k] = v;
+  p["conversion_form"] = std::string(cin::to_string(c.conversion_form));
+  p["conversion"] = std::string(ant_colony::to_string(c.conversion));
+  p["elite_share"] = c.elite_share;
+  return p;
+}
+
+CinConfig from_params(const CinConfig& base, const Json& params) {
+  auto [aco, rest] = split(params);
+  CinConfig c = base;
+  c.aco = ant_colony::from_params(base.aco, aco);
+  if (rest.contains("conversion_form")) {
+    c.conversion_form = cin::parse_conversion_form(rest.at("conversion_form").get<std::string>());
+    rest.erase("conversion_form");
+  }
+  if (rest.contains("conversion")) {
+    c.conversion = ant_colony::parse_initial_mode(rest.at("conversion").get<std::string>());
+    rest.erase("conversion");
+  }
+  if (rest.contains("elite_share")) {
+    c.elite_share = rest.at("elite_share").get<double>();
+    rest.erase("elite_share");
+  }
+  require(std::isfinite(c.elite_share) && c.elite_share > 0.0 && c.elite_share <= 1.0,
+          "elite_share must lie in (0, 1]");
+  c.ga = genetic::from_params(base.ga, rest);
+  return c;
+}
+
+planners::Result run_cin(const planners::Request& req, const CinConfig& c, rng::Stream& stream) {
+  const grid::Grid& g = grid_of(req);
+  require_endpoints(g, req);
+  genetic::validate(c.ga);
+  require(std::isfinite(c.elite_share) && c.elite_share > 0.0 && c.elite_share <= 1.0,
+          "elite_share must lie in (0, 1]");
+  Json params = to_params(c);
+  if (req.start == req.goal) return trivial(req, std::move(params));
+  // Phase 1: the whole optimised GA (initial population, then the generations).
+  const genetic::InitOutcome init =
+      genetic::initial_population(g, req.start, req.goal, req.policy, c.ga, stream, c.ga.population);
+  if (!init.ok) {
+    planners::Result r;
+    r.params_used = std::move(params);
+    r.extra = genetic::population_extra(0, 0, 0, init);
+    r.extra["failure"] = init.failure;
+    r.extra["draws"] = stream.doubles_drawn();
+    return r;
+  }
+  std::vector<genetic::Individual> pop;
+  pop.reserve(init.paths.size());
+  for (const auto& p : init.paths)
+    pop.push_back(genetic::make_individual(g, p, c.ga, genetic::Origin::init, 0));
+  const auto built = static_cast<std::int64_t>(pop.size());
+  Json population = genetic::population_extra(built, built, 0, init);
+  genetic::Evolution ev = genetic::evolve(g, req.policy, c.ga, stream, std::move(pop));
+  // Conversion (Eq. 28): the top elite_share of the last generation by fitness.
+  std::vector<double> fit(ev.final_population.size());
+  for (std::size_t s = 0; s < fit.size(); ++s) fit[s] = ev.final_population[s].fitness;
+  const std::vector<std::size_t> top =
+      ga::elite_indices(fit, ga::elite_count(fit.size(), c.elite_share));
+  std::vector<std::vector<grid::Cell>> rows;
+  rows.reserve(top.size());
+  for (const std::size_t k : top) rows.push_back(ev.final_population[k].path);
+  const std::vector<cin::EdgePheromone> tau_g = cin::converted_pheromone(rows, c.aco.Q, c.conversion_form);
+  // Phase 2: the optimised colony from the converted pheromone.
+  ant_colony::Run colony = ant_colony::run(req, c.aco, stream, tau_g, c.conversion);
+  planners::Result r = std::move(colony.result);
+  r.iterations = c.ga.generations + c.aco.iterations;
+  std::vector<double> best = ev.best_per_generation;
+  best.insert(best.end(), r.best_per_iteration.begin(), r.best_per_iteration.end());
+  r.best_per_iteration = std::move(best);
+  std::vector<double> mean = ev.mean_per_generation;
+  mean.insert(mean.end(), r.mean_per_iteration.begin(), r.mean_per_iteration.end());
+  r.mean_per_iteration = std::move(mean);
+  r.params_used = std::move(params);
+  Json extra = std::move(r.extra);
+  extra["phase_lengths"] = Json{{"ga", c.ga.generations}, {"aco", c.aco.iterations}};
+  extra["ga_best_length"] = ev.best.length;
+  extra["ga_best_generation"] = ev.best_generation;
+  extra["converted_rows"] = rows.size();
+  extra["converted_edges"] = tau_g.size();
+  for (auto it = population.begin(); it != population.end(); ++it) extra[it.key()] = it.value();
+  extra["draws"] = stream.doubles_drawn();
+  r.extra = std::move(extra);
+  return r;
+}
+
 planners::Result run_traditional(const planners::Request& req, const TraditionalConfig& c,
                                  rng::Stream& stream) {
   const grid::Grid& g = grid_of(req);
@@ -278,6 +368,25 @@ Planner make_hybrid_ga_aco_planner() {
     const hybrid::TraditionalConfig c = hybrid::from_params(base, params);
     rng::Stream stream(req.seed);
     return hybrid::run_traditional(req, c, stream);
+  };
+  return p;
+}
+
+Planner make_hga_aco_cin_planner() {
+  Planner p;
+  p.name = "hga-aco-cin";
+  p.description =
+      "HGA-ACO of cin2021 Sec. 5 (optimised GA, Eq. 28 pheromone conversion, optimised ACO with "
+      "weighted best deposits and the dead-angle table), spec/cin2021-hga-aco.md";
+  const hybrid::CinConfig base;
+  p.defaults = hybrid::to_params(base);
+  p.run = [defaults = p.defaults, base](const Request& req) {
+    const Json params = merge_params(defaults, req.params);
+    const hybrid::CinConfig c = hybrid::from_params(base, params);
+    rng::Stream stream(req.seed);
+    planners::Result r = hybrid::run_cin(req, c, stream);
+    r.extra["seed"] = req.seed;
+    return r;
   };
   return p;
 }

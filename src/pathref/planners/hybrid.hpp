@@ -53,6 +53,16 @@ struct ImprovedConfig {
   DeletionScope deletion_scope = DeletionScope::initial;
 };
 
+/// Settings of `hga-aco-cin` (cin2021 Sec. 5.2-5.5): the optimised GA (genetic::cin_ga), the
+/// conversion of Eq. 28 and the optimised ACO (ant_colony::cin_aco).
+struct CinConfig {
+  genetic::Config ga = genetic::cin_ga();
+  ant_colony::Config aco = ant_colony::cin_aco();
+  cin::ConversionForm conversion_form = cin::ConversionForm::q_over_l;
+  ant_colony::InitialMode conversion = ant_colony::InitialMode::add;
+  double elite_share = 0.2;  ///< share of the last generation converted, (0, 1]
+};
+
 /// Parameters: the colony's (ant_colony::to_params) with the prefix "aco_", the GA's
 /// (genetic::to_params), and the hybrid's own (`fill`; `inject`, `deletion_scope`,
 /// `elite_fraction`). Spec: shi2022.plan.hybrid, shi2022.plan.iha ("Parameters").
@@ -60,6 +70,10 @@ struct ImprovedConfig {
 [[nodiscard]] Json to_params(const ImprovedConfig& c);
 [[nodiscard]] TraditionalConfig from_params(const TraditionalConfig& base, const Json& params);
 [[nodiscard]] ImprovedConfig from_params(const ImprovedConfig& base, const Json& params);
+/// hga-aco-cin: the GA's parameters unprefixed, the colony's with "aco_", and `conversion_form`,
+/// `conversion`, `elite_share`. Spec: cin2021.plan.hga-aco ("Parameters").
+[[nodiscard]] Json to_params(const CinConfig& c);
+[[nodiscard]] CinConfig from_params(const CinConfig& base, const Json& params);
 
 /// The traditional hybrid (spec shi2022.plan.hybrid): Ant System, then the single GA whose
 /// initial population is the colony's distinct paths, shortest first. Result: the GA's best;
@@ -77,6 +91,18 @@ struct ImprovedConfig {
 [[nodiscard]] planners::Result run_improved(const planners::Request& req, const ImprovedConfig& c,
                                             rng::Stream& stream);
 
+/// HGA-ACO (spec cin2021.plan.hga-aco): the whole ga-cin run, the Eq. 28 conversion of the top
+/// ceil(elite_share M) of its last generation (by fitness, stable) into the initial pheromone,
+/// then the whole aco-cin run from it, on one stream. Result: the ACO phase's best; curves = the
+/// GA's generations then the colony's iterations; extra: phase_lengths {ga, aco}, ga_best_length,
+/// best_iteration (ACO phase), converted_rows, converted_edges, dead_angle_table, draws.
+/// Source: cin2021 Sec. 5.2, 5.4, Figure 7, doi:10.1155/2021/8025730.
+/// Spec: cin2021.plan.hga-aco
+/// Pre: req.grid set (UsageError); start, goal in bounds and free (DomainError).
+/// Post: found => path valid under req.policy.
+[[nodiscard]] planners::Result run_cin(const planners::Request& req, const CinConfig& c,
+                                       rng::Stream& stream);
+
 }  // namespace pathref::hybrid
 
 namespace pathref::planners {
@@ -85,5 +111,7 @@ namespace pathref::planners {
 [[nodiscard]] Planner make_hybrid_ga_aco_planner();
 /// Planner "iha". Spec: shi2022.plan.iha
 [[nodiscard]] Planner make_iha_planner();
+/// Planner "hga-aco-cin": cin2021 HGA-ACO. Spec: cin2021.plan.hga-aco
+[[nodiscard]] Planner make_hga_aco_cin_planner();
 
 }  // namespace pathref::planners

@@ -26,6 +26,10 @@ std::vector<Planner> all_planners() {
   v.push_back(make_hybrid_ga_aco_planner());
   v.push_back(make_iha_planner());
   v.push_back(make_ga_classic_planner());
+  // cin2021 HGA-ACO planners (spec/cin2021-hga-aco.md)
+  v.push_back(make_ga_cin_planner());
+  v.push_back(make_aco_cin_planner());
+  v.push_back(make_hga_aco_cin_planner());
   // IACO-A* (spec/han-sim.md): added by the simulation module
   // (its parameters are those of the planners above, as <planner>.<name>)
   v.push_back(make_iaco_astar_planner(v));

@@ -6,6 +6,8 @@
 /// runs and their summaries. Spec: spec/reproduce.md (reproduce.run, reproduce.quick,
 /// reproduce.stats, reproduce.curves)
 #include <cstdint>
+#include <functional>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -42,6 +44,61 @@ struct RunRecord {
   Json params_used;
   Json extra;
 };
+
+/// How run_series executes its runs (spec reproduce.execution): `run` runs them here on `jobs`
+/// threads (results identical to one thread except the measured wall times); `emit` runs nothing
+/// and appends one self-contained job (job_json) per run to `emitted`, the series then holding
+/// placeholder runs that found nothing; `merge` runs nothing and takes each run's record from
+/// `merged` (job key -> record_to_json_full), a missing one being a UsageError.
+struct Execution {
+  enum class Mode { run, emit, merge };
+  Mode mode = Mode::run;
+  int jobs = 1;
+  std::vector<Json>* emitted = nullptr;
+  const std::map<std::string, Json>* merged = nullptr;
+  std::string merged_from;  ///< the --merge directory, for messages
+};
+/// The execution context in force (default: run on one thread). Spec: reproduce.execution.
+[[nodiscard]] const Execution& current_execution();
+/// Installs `e` as the execution context until the scope ends (then restores the previous one).
+/// Not for concurrent reproductions: one reproduction at a time per process.
+class ExecutionScope {
+ public:
+  explicit ExecutionScope(Execution e);
+  ~ExecutionScope();
+  ExecutionScope(const ExecutionScope&) = delete;
+  ExecutionScope& operator=(const ExecutionScope&) = delete;
+
+ private:
+  Execution previous_;
+};
+
+/// Calls fn(0), ..., fn(n - 1), on current_execution().jobs threads in run mode (each index
+/// exactly once, in any order; the caller writes results by index, so the outcome does not depend
+/// on the schedule). The first exception by index is rethrown after all have finished.
+void parallel_for(std::size_t n, const std::function<void(std::size_t)>& fn);
+
+/// The identity of one run: context, planner, requested parameters, seed and a 64-bit FNV-1a
+/// fingerprint of the map, endpoints and policy. Spec: reproduce.execution.
+[[nodiscard]] std::string job_key(const std::string& context, const std::string& name, const Json& requested,
+                                  const grid::Grid& g, grid::Cell start, grid::Cell goal,
+                                  grid::CornerPolicy policy, std::uint32_t seed);
+
+/// The self-contained job of one run: {"key", "context", "planner", "params", "seed", "policy",
+/// "start", "goal", "rows"} (rows top first, spec/grid.md). Spec: reproduce.execution.
+[[nodiscard]] Json job_json(const std::string& context, const std::string& name, const Json& requested,
+                            const grid::Grid& g, grid::Cell start, grid::Cell goal, grid::CornerPolicy policy,
+                            std::uint32_t seed);
+
+/// Runs one job (job_json) and returns {"format": "pathref-reproduce-run", "format_version": 1,
+/// "key", "record": record_to_json_full}. UsageError for a malformed job or an unknown planner.
+/// Spec: reproduce.execution.
+[[nodiscard]] Json run_job(const Json& job);
+
+/// Every field of a RunRecord, losslessly (non-finite doubles as "inf", "-inf", "nan").
+[[nodiscard]] Json record_to_json_full(const RunRecord& r);
+/// The inverse of record_to_json_full (UsageError naming the field on malformed input).
+[[nodiscard]] RunRecord record_from_json_full(const Json& j);
 
 /// The planner registered as `name`, or nullptr (the caller reports "not available in this
 /// build"). Spec: reproduce.run.

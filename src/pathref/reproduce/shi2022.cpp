@@ -108,6 +108,28 @@ const Json& stat_of(const Json& series, const std::string& stat) {
   return at_or_null(series, {"summary", stat.substr(0, dot), stat.substr(dot + 1)});
 }
 
+/// What the claim rules need besides the results: the protocol's n (the first n runs of the 2n
+/// run are the paper's protocol) and the bootstrap seed (reproduce.judge).
+struct JudgeContext {
+  std::int64_t n = 50;
+  std::uint32_t seed = 1;
+};
+
+/// The values of `key` over the first `count` runs of a series (all runs when count < 0), skipping
+/// runs without a value, in run order.
+std::vector<double> values_first(const Json& series, const std::string& key, std::int64_t count) {
+  std::vector<double> v;
+  const Json& runs = at_or_null(series, {"runs"});
+  if (!runs.is_array()) return v;
+  std::int64_t k = 0;
+  for (const Json& r : runs) {
+    if (count >= 0 && k++ >= count) break;
+    const Json& x = at_or_null(r, {key});
+    if (x.is_number()) v.push_back(x.get<double>());
+  }
+  return v;
+}
+
 /// Why a statistic of these planners is missing: not registered, or no run found a path.
 std::string unavailable_note(const Json& results, std::initializer_list<std::string> names) {
   std::string note;
@@ -125,11 +147,6 @@ std::string unavailable_note(const Json& results, std::initializer_list<std::str
   return note;
 }
 
-std::string percent_change(double reduction) {
-  if (reduction > 0.0) return "−" + fixed(reduction, 1) + " %";
-  if (reduction < 0.0) return "+" + fixed(-reduction, 1) + " %";
-  return fixed(0.0, 1) + " %";
-}
 
 Json map_json(const ProtocolMap& m, grid::Cell start, grid::Cell goal) {
   std::int64_t blocked = 0;
@@ -143,9 +160,9 @@ Json map_json(const ProtocolMap& m, grid::Cell start, grid::Cell goal) {
               {"goal", Json::array({goal.x, goal.y})}};
 }
 
-/// Claims of one printed table (3, 4 or 5) for the map `key`.
-void table_claims(std::vector<Claim>& claims, const Json& results, const std::string& table,
-                  bool testable, const std::string& untestable_reason) {
+/// Claims of one printed table (3, 4 or 5) for the map `key` (reproduce.judge: value claims).
+void table_claims(std::vector<Claim>& claims, const Json& results, const std::string& table, bool testable,
+                  const std::string& untestable_reason, const JudgeContext& jc) {
   int k = 0;
   for (const PaperNumber& p : paper_tables()) {
     if (p.table != table) continue;
@@ -156,38 +173,55 @@ void table_claims(std::vector<Claim>& claims, const Json& results, const std::st
     c.source = fmt::format("{}, row \"{}\", column {}", table, p.row, planner_label(p.planner));
     c.paper = p.value;
     const Json& series = at_or_null(results, {p.planner});
-    const Json& v = stat_of(series, p.stat);
-    c.ours = md_number(v, decimals_of(p.stat));
+    const auto dot = p.stat.find('.');
+    const std::string key = p.stat.substr(0, dot);
+    const bool is_min = p.stat.substr(dot + 1) == "min";
+    const Quantity q = key == "length" ? Quantity::length
+                       : key == "turns" ? Quantity::turns
+                       : key == "converged_at" ? Quantity::iterations
+                                               : Quantity::time;
+    const BootstrapOptions bo{jc.seed, 2000, 0.95};
+    const auto judge = [&](Claim& cl, const std::string& k2) {
+      const auto vn = values_first(series, k2, jc.n);
+      const auto v2 = values_first(series, k2, -1);
+      if (vn.empty()) {
+        cl.verdict = Verdict::untestable;
+        cl.ours = "—";
+        cl.note = unavailable_note(results, {p.planner});
+        if (cl.note.empty()) cl.note = "no value (no run found a path)";
+        return;
+      }
+      value_claim(cl, vn, v2.size() > vn.size() ? std::span<const double>(v2) : std::span<const double>(), std::stod(p.value),
+                  q, Sense::lower_is_better, is_min ? BootStatistic::minimum : BootStatistic::mean, bo,
+                  decimals_of(p.stat));
+    };
     if (!testable) {
       c.verdict = Verdict::untestable;
+      c.ours = md_number(stat_of(series, p.stat), decimals_of(p.stat));
       c.note = untestable_reason;
-    } else if (!v.is_number()) {
-      c.verdict = Verdict::untestable;
-      c.note = unavailable_note(results, {p.planner});
-      if (c.note.empty()) c.note = "no value (no run found a path)";
     } else {
-      c.rule = "equal when rounded to the printed decimals";
-      c.verdict = matches_printed(v.get<double>(), p.value) ? Verdict::holds : Verdict::fails;
+      judge(c, key);
     }
-    claims.push_back(c);
     // The other reading of "iterations" for the hybrids (reproduce.converge): the whole curve.
-    if (testable && p.stat == "converged_at.mean" && (p.planner == "hybrid-ga-aco" || p.planner == "iha")) {
-      Claim w = c;
-      w.id += "w";
-      w.text += " (whole-curve reading: colony iterations + GA generations)";
-      const Json& vw = stat_of(series, "converged_at_whole_curve.mean");
-      w.ours = md_number(vw, 2);
-      if (vw.is_number()) {
-        w.verdict = matches_printed(vw.get<double>(), p.value) ? Verdict::holds : Verdict::fails;
-        w.note.clear();
-      }
+    const bool hybrid_iter = testable && key == "converged_at" && (p.planner == "hybrid-ga-aco" || p.planner == "iha");
+    if (hybrid_iter) c.depends_on.push_back("iterations counted in GA generations (reproduce.converge; alternative: " + c.id + "w)");
+    claims.push_back(c);
+    if (hybrid_iter) {
+      Claim w;
+      w.id = c.id + "w";
+      w.text = c.text + " (whole-curve reading: colony iterations + GA generations)";
+      w.source = c.source;
+      w.paper = c.paper;
+      judge(w, "converged_at_whole_curve");
+      w.depends_on.push_back("iterations over the whole curve (reproduce.converge, the alternative of " + c.id + ")");
       claims.push_back(w);
     }
   }
 }
 
-void reduction_claims(std::vector<Claim>& claims, const Json& all_results) {
+void reduction_claims(std::vector<Claim>& claims, const Json& all_results, const JudgeContext& jc) {
   int k = 0;
+  const BootstrapOptions bo{jc.seed, 2000, 0.95};
   for (const PaperReduction& p : paper_reductions()) {
     ++k;
     const Json& results = all_results.at(p.map);
@@ -198,79 +232,71 @@ void reduction_claims(std::vector<Claim>& claims, const Json& all_results) {
     c.source = p.map == "simple" ? "§6, conclusion on Table 3 (also the abstract for the traditional hybrid)"
                                  : "§6, conclusion on Table 4 (also the abstract for the traditional hybrid)";
     c.paper = "−" + p.printed + " %";
-    const Json& from = stat_of(at_or_null(results, {p.other}), p.quantity + ".mean");
-    const Json& to = stat_of(at_or_null(results, {"iha"}), p.quantity + ".mean");
-    c.rule = fmt::format("pathref's reduction 100·(other − IHA)/other of the means within ±{} points",
-                         fixed(about_percent_tolerance, 0));
-    auto judge = [&](Claim& cl, const Json& f, const Json& t) {
-      if (!f.is_number() || !t.is_number() || f.get<double>() <= 0.0) {
+    auto judge = [&](Claim& cl, const std::string& key) {
+      const Json& other = at_or_null(results, {p.other});
+      const Json& iha = at_or_null(results, {"iha"});
+      const auto a_n = values_first(iha, key, jc.n), b_n = values_first(other, key, jc.n);
+      const auto a_2 = values_first(iha, key, -1), b_2 = values_first(other, key, -1);
+      if (a_n.empty() || b_n.empty()) {
         cl.verdict = Verdict::untestable;
         cl.ours = "—";
         cl.note = unavailable_note(results, {p.other, "iha"});
-        if (cl.note.empty()) cl.note = "the mean of the other planner is 0 or undefined";
-        cl.rule.clear();
-      } else {
-        const double r = reduction_percent(f.get<double>(), t.get<double>());
-        cl.ours = fmt::format("{} ({} → {})", percent_change(r), md_number(f, 2), md_number(t, 2));
-        cl.verdict = judge_about_percent(r, p.percent);
+        if (cl.note.empty()) cl.note = "no value";
+        return;
       }
+      const bool more = a_2.size() > a_n.size() || b_2.size() > b_n.size();
+      reduction_claim(cl, a_n, b_n, more ? std::span<const double>(a_2) : std::span<const double>(),
+                      more ? std::span<const double>(b_2) : std::span<const double>(), p.percent, bo);
     };
-    judge(c, from, to);
+    judge(c, p.quantity);
+    if (p.quantity == "converged_at")
+      c.depends_on.push_back("iterations counted in GA generations for the hybrids (reproduce.converge; alternative: " +
+                             c.id + "w)");
     claims.push_back(c);
     if (p.quantity == "converged_at") {
-      Claim w = c;
-      w.id += "w";
-      w.text += " (whole-curve reading of the iterations)";
-      w.rule = c.rule.empty() ? fmt::format("pathref's reduction 100·(other − IHA)/other of the means within ±{} points",
-                                            fixed(about_percent_tolerance, 0))
-                              : c.rule;
-      judge(w, stat_of(at_or_null(results, {p.other}), "converged_at_whole_curve.mean"),
-            stat_of(at_or_null(results, {"iha"}), "converged_at_whole_curve.mean"));
+      Claim w;
+      w.id = c.id + "w";
+      w.text = c.text + " (whole-curve reading of the iterations)";
+      w.source = c.source;
+      w.paper = c.paper;
+      judge(w, "converged_at_whole_curve");
+      w.depends_on.push_back("iterations over the whole curve (reproduce.converge, the alternative of " + c.id + ")");
       claims.push_back(w);
     }
   }
 }
 
-std::string welch_text(const Json& a, const Json& b, const std::string& key) {
-  const auto va = run_values(a, key);
-  const auto vb = run_values(b, key);
-  if (va.size() < 2 || vb.size() < 2) return "";
-  const auto t = welch_t(va, vb);
-  return t ? fmt::format("Welch t = {}", fixed(*t, 2)) : std::string("both samples constant");
-}
-
-/// "A's mean `key` is smaller than B's" (direction claims).
-Claim less_claim(const std::string& id, const std::string& text, const std::string& source,
-                 const Json& results, const std::string& a, const std::string& b,
-                 const std::string& key) {
+/// "A's `key` is smaller than B's" (direction claims, reproduce.judge: Mann-Whitney).
+Claim less_claim(const std::string& id, const std::string& text, const std::string& source, const Json& results,
+                 const std::string& a, const std::string& b, const std::string& key, const JudgeContext& jc) {
   Claim c;
   c.id = id;
   c.text = text;
   c.source = source;
   c.paper = planner_label(a) + " < " + planner_label(b);
-  const Json& ma = stat_of(at_or_null(results, {a}), key + ".mean");
-  const Json& mb = stat_of(at_or_null(results, {b}), key + ".mean");
-  if (!ma.is_number() || !mb.is_number()) {
+  const Json& sa = at_or_null(results, {a});
+  const Json& sb = at_or_null(results, {b});
+  const auto a_n = values_first(sa, key, jc.n), b_n = values_first(sb, key, jc.n);
+  const auto a_2 = values_first(sa, key, -1), b_2 = values_first(sb, key, -1);
+  if (a_n.empty() || b_n.empty()) {
     c.ours = "—";
     c.verdict = Verdict::untestable;
     c.note = unavailable_note(results, {a, b});
     if (c.note.empty()) c.note = "no value";
     return c;
   }
-  const int d = decimals_of(key);
-  c.ours = fmt::format("{} vs {}", md_number(ma, d), md_number(mb, d));
-  c.rule = "strictly smaller mean over the runs";
-  c.verdict = ma.get<double>() < mb.get<double>() ? Verdict::holds : Verdict::fails;
-  c.note = welch_text(at_or_null(results, {a}), at_or_null(results, {b}), key);
+  const bool more = a_2.size() > a_n.size() || b_2.size() > b_n.size();
+  comparison_claim(c, a_n, b_n, more ? std::span<const double>(a_2) : std::span<const double>(),
+                   more ? std::span<const double>(b_2) : std::span<const double>(), Claimed::a_less, decimals_of(key));
   return c;
 }
 
 /// Every claim of Tables 3-5, §5.1 and §6 judged on `results` (the maps' series by planner
-/// name), in report order; the map claims M.1-M.2 are made by the caller.
-std::vector<Claim> paper_claims(const Json& results) {
+/// name), in report order; pathref's own checks (M.1, M.2, ...) are made by the caller.
+std::vector<Claim> paper_claims(const Json& results, const JudgeContext& jc) {
   std::vector<Claim> claims;
-  table_claims(claims, at_or_null(results, {"simple"}), "Table 3", true, "");
-  table_claims(claims, results.at("complex"), "Table 4", true, "");
+  table_claims(claims, at_or_null(results, {"simple"}), "Table 3", true, "", jc);
+  table_claims(claims, results.at("complex"), "Table 4", true, "", jc);
   {
     Claim c;
     c.id = "F8.1";
@@ -278,18 +304,18 @@ std::vector<Claim> paper_claims(const Json& results) {
     c.source = "§5.1, text on Figure 8";
     c.paper = "11";
     const Json& v = at_or_null(results, {"simple", "astar", "summary", "turns", "min"});
-    c.ours = md_number(v, 0);
     if (v.is_number()) {
-      c.rule = "equal";
-      c.verdict = matches_printed(v.get<double>(), "11") ? Verdict::holds : Verdict::fails;
+      exact_value_claim(c, v.get<double>(), 11.0, Quantity::turns, Sense::lower_is_better, 0);
       c.note = "A*'s path among equally short ones depends on its tie-breaking (spec/search.md)";
+      c.depends_on.push_back("A*'s tie-breaking among equally short paths (spec/search.md), not the paper's");
     } else {
+      c.ours = "—";
       c.verdict = Verdict::untestable;
       c.note = unavailable_note(at_or_null(results, {"simple"}), {"astar"});
     }
     claims.push_back(c);
   }
-  reduction_claims(claims, results);
+  reduction_claims(claims, results, jc);
   int k = 0;
   for (const std::string key : {"simple", "complex"})
     for (const std::string other : {"ga", "hybrid-ga-aco"})
@@ -297,32 +323,38 @@ std::vector<Claim> paper_claims(const Json& results) {
                                   fmt::format("IHA's average path length is shorter than {}'s on the {} map",
                                               planner_label(other), key),
                                   key == "simple" ? "Table 3 and §5.1 on Figure 9" : "Table 4 and §5.2 on Figure 12",
-                                  at_or_null(results, {key}), "iha", other, "length"));
+                                  at_or_null(results, {key}), "iha", other, "length", jc));
   claims.push_back(less_claim("E.1",
                               "without the lower limit ρ_min, IACO* stops improving and ends on longer paths than IACO",
                               "§5.1, trial-and-error experiment, Figure 10", at_or_null(results, {"simple"}), "iaco-shi",
-                              "iaco-shi-nomin", "length"));
+                              "iaco-shi-nomin", "length", jc));
   claims.push_back(less_claim("E.2",
                               "without the upper limit P_m_max, IGA* deviates from the better path (longer final paths than IGA)",
                               "§5.1, trial-and-error experiment, Figure 10", at_or_null(results, {"simple"}), "iga-shi",
-                              "iga-shi-nomax", "length"));
+                              "iga-shi-nomax", "length", jc));
   claims.push_back(less_claim("E.3", "IHA ends on shorter paths than IACO*", "§5.1, Figure 10",
-                              at_or_null(results, {"simple"}), "iha", "iaco-shi-nomin", "length"));
+                              at_or_null(results, {"simple"}), "iha", "iaco-shi-nomin", "length", jc));
   claims.push_back(less_claim("E.4", "IHA ends on shorter paths than IGA*", "§5.1, Figure 10",
-                              at_or_null(results, {"simple"}), "iha", "iga-shi-nomax", "length"));
+                              at_or_null(results, {"simple"}), "iha", "iga-shi-nomax", "length", jc));
+  // Claims that read the traditional hybrid rest on its reconstruction (spec/shi2022-ga.md).
+  for (Claim& c : claims)
+    if (c.id.rfind("T5", 0) != 0 && (c.text.find("traditional hybrid") != std::string::npos))
+      c.depends_on.push_back("pathref's reconstruction of the traditional hybrid (Bao et al., from Shi's description), "
+                             "whose colony uses the goal-blind η = 1/d_ij (spec/shi2022-ga.md, shi2022.plan.hybrid; "
+                             "the goal-directed η: reading `eta`)");
   if (results.contains("shi6x6"))
     table_claims(claims, results.at("shi6x6"), "Table 5", false,
                  "the paper's 6×6 obstacle layout is not published; pathref's shi6x6 is a reconstruction "
-                 "(spec/cli.md#builtin-maps) and the plan time of the physical vehicle is not defined");
+                 "(spec/cli.md#builtin-maps) and the plan time of the physical vehicle is not defined",
+                 jc);
   return claims;
 }
 
-void append(std::vector<Claim>& to, const std::vector<Claim>& from) { to.insert(to.end(), from.begin(), from.end()); }
 
 /// The claims that read a planner of `r`, judged again on its runs under the reading (spec
 /// reproduce.shi2022.readings): `results` with each planner of r replaced by its "PLANNER@KEY"
 /// series. A claim reads a planner iff removing that planner's series changes the claim.
-std::vector<Claim> reading_claims(const Json& results, const ShiReading& r) {
+std::vector<Claim> reading_claims(const Json& results, const ShiReading& r, const JudgeContext& jc) {
   Json view = results;
   Json removed = results;
   for (const char* key : {"simple", "complex"}) {
@@ -334,14 +366,15 @@ std::vector<Claim> reading_claims(const Json& results, const ShiReading& r) {
   }
   view.erase("shi6x6");
   removed.erase("shi6x6");
-  const std::vector<Claim> base = paper_claims(removed);
-  const std::vector<Claim> under = paper_claims(view);
-  const std::vector<Claim> orig = paper_claims([&] { Json j = results; j.erase("shi6x6"); return j; }());
+  const std::vector<Claim> base = paper_claims(removed, jc);
+  const std::vector<Claim> under = paper_claims(view, jc);
+  const std::vector<Claim> orig = paper_claims([&] { Json j = results; j.erase("shi6x6"); return j; }(), jc);
   std::vector<Claim> out;
   for (std::size_t i = 0; i < under.size(); ++i) {
     const bool reads = claim_json(base[i]) != claim_json(orig[i]);
     if (!reads) continue;
     Claim c = under[i];
+    c.depends_on.push_back("reading `" + r.key + "` (reproduce.shi2022.readings), the alternative of " + c.id);
     c.id += r.suffix;
     c.text += " [reading: " + r.key + "]";
     for (const std::string& p : r.planners) {  // the note names the series it read
@@ -365,16 +398,36 @@ const std::vector<std::string>& shi2022_planners() {
 
 const std::vector<ShiReading>& shi2022_readings() {
   static const std::vector<ShiReading> v = {
-      {"shift", "s",
-       "GA initialisation `init_reject = shift`: a blocked Eq. 9 mid-point is shifted to a free cell of its row, "
-       "as the widely copied MATLAB GA scripts do (shi2022.op.init; default `blocked`: the chain is rejected)",
-       {"ga", "iga-shi", "iga-shi-nomax"},
-       Json{{"init_reject", "shift"}}},
+      {"blocked", "b",
+       "GA initialisation `init_reject = blocked`: a chain whose Eq. 9 mid-point is blocked is rejected (the literal "
+       "\"eliminate\"; pathref's default before issue 11) instead of the default `shift` to a free cell of its row, "
+       "as the widely copied MATLAB GA scripts do (shi2022.op.init)",
+       {"ga", "iga-shi", "iga-shi-nomax", "iha"},
+       Json{{"init_reject", "blocked"}}},
+      {"reject", "r",
+       "GA initialisation `illegal_step = reject`: a chain with a continuous diagonal pair that cuts an obstacle "
+       "corner is rejected (pathref's earlier reading) instead of the default `repair`, which treats the pair as not "
+       "continuous and inserts its free orthogonal cell as §4.2 step 2 does for every non-continuous pair "
+       "(shi2022.op.init)",
+       {"ga", "iga-shi", "iga-shi-nomax", "iha"},
+       Json{{"illegal_step", "reject"}}},
+      {"pernode", "p",
+       "Eq. 16 read `smoothness = per_node` (fit_2 = the sum over interior nodes of 1/P, the reading of the printed "
+       "sum) instead of the default `inverse_total_plus_one` (fit_2 = 1 / (1 + the total turn penalty), the classic "
+       "script's 1/smoothness made finite for a turn-free path); per_node grows with the number of nodes, so it "
+       "rewards longer paths (shi2022.eq16)",
+       {"iga-shi", "iga-shi-nomax", "iha"},
+       Json{{"smoothness", "per_node"}}},
       {"length", "l",
        "`result_by = length`: the hybrids return the shortest path they evaluated, not the fittest "
        "(shi2022.plan.ga, Reading \"The result\"; default `fitness`)",
        {"hybrid-ga-aco", "iha"},
        Json{{"result_by", "length"}}},
+      {"eta", "e",
+       "the traditional hybrid's colony with the goal-directed η = 1/(d_ij + d_jE) (the η of Shi's IACO) instead of "
+       "the goal-blind η = 1/d_ij of the plain colony it is reconstructed with (shi2022.plan.hybrid)",
+       {"hybrid-ga-aco"},
+       Json{{"aco_eta", "goal_directed"}}},
       {"invlen", "f",
        "IHA with `fitness = inverse_length` (Eq. 10) instead of the weighted Eq. 14–18, whose sums over nodes "
        "reward longer paths (shi2022.eq14, Note)",
@@ -417,8 +470,15 @@ Json run_shi2022(const ShiConfig& cfg) {
       "doi:10.3389/fbioe.2022.905983";
   const auto last_seed = static_cast<std::uint64_t>(cfg.seed) + static_cast<std::uint64_t>(cfg.runs) - 1;
   require(last_seed <= 4294967295ULL, "run_shi2022: seed + runs - 1 must not exceed 4294967295");
+  const std::int64_t runs2 = 2 * cfg.runs;  // reproduce.judge: verdicts at n and at 2n
+  const auto last_seed2 = static_cast<std::uint64_t>(cfg.seed) + static_cast<std::uint64_t>(runs2) - 1;
+  require(last_seed2 <= 4294967295ULL, "run_shi2022: seed + 2 runs - 1 must not exceed 4294967295");
   doc["protocol"] = Json{{"runs", cfg.runs},
+                         {"runs_2n", runs2},
                          {"seeds", Json::array({cfg.seed, last_seed})},
+                         {"seeds_2n", Json::array({cfg.seed, last_seed2})},
+                         {"bootstrap", Json{{"resamples", 2000}, {"level", 0.95}, {"seed", cfg.seed}}},
+                         {"alpha", 0.05},
                          {"policy", std::string(grid::to_string(cfg.policy))},
                          {"orientation", std::string(to_string(cfg.orientation))},
                          {"quick", cfg.quick},
@@ -444,11 +504,11 @@ Json run_shi2022(const ShiConfig& cfg) {
     for (const std::string& name : shi2022_planners()) {
       const bool deterministic = name == "astar" || name == "dijkstra";
       res[name] = run_series(name, Json::object(), m->grid, start, goal, cfg.policy, cfg.seed,
-                             deterministic ? 1 : cfg.runs, cfg.quick, cfg.progress, "shi2022 " + key);
+                             deterministic ? 1 : runs2, cfg.quick, cfg.progress, "shi2022 " + key);
     }
     for (const ShiReading& r : shi2022_readings())  // reproduce.shi2022.readings
       for (const std::string& name : r.planners)
-        res[name + "@" + r.key] = run_series(name, r.params, m->grid, start, goal, cfg.policy, cfg.seed, cfg.runs,
+        res[name + "@" + r.key] = run_series(name, r.params, m->grid, start, goal, cfg.policy, cfg.seed, runs2,
                                              cfg.quick, cfg.progress, "shi2022 " + key);
     results[key] = res;
   }
@@ -466,7 +526,7 @@ Json run_shi2022(const ShiConfig& cfg) {
                                       std::string("dijkstra")}) {
         const bool deterministic = name == "dijkstra";
         res[name] = run_series(name, Json::object(), mf.grid, start, goal, cfg.policy, cfg.seed,
-                               deterministic ? 1 : cfg.runs, cfg.quick, cfg.progress, "shi2022 shi6x6");
+                               deterministic ? 1 : runs2, cfg.quick, cfg.progress, "shi2022 shi6x6");
       }
       results["shi6x6"] = res;
     }
@@ -480,8 +540,9 @@ Json run_shi2022(const ShiConfig& cfg) {
                          {"planner", p.planner}, {"value", p.value}, {"compared_with", p.stat}});
   doc["paper_numbers"] = paper;
 
-  std::vector<Claim> claims;
-  // Protocol check: the A* optimum equals the printed optimum (identifies the maps).
+  const JudgeContext jc{cfg.runs, cfg.seed};
+  // pathref's own checks (reproduce.judge): they test the maps and pathref, not the paper.
+  std::vector<Claim> checks;
   for (const auto& [key, printed, table] : {std::tuple{std::string("simple"), std::string("29.8"), std::string("Table 3")},
                                             std::tuple{std::string("complex"), std::string("31.56"), std::string("Table 4")}}) {
     Claim c;
@@ -493,25 +554,83 @@ Json run_shi2022(const ShiConfig& cfg) {
     const Json& v = at_or_null(results, {key, "dijkstra", "summary", "length", "min"});
     c.ours = md_number(v, 4);
     if (v.is_number()) {
-      c.rule = "Dijkstra's shortest length equal when rounded to the printed decimals";
+      c.rule = "Dijkstra's shortest length equal when rounded to the printed decimals (an exact optimum)";
       c.verdict = matches_printed(v.get<double>(), printed) ? Verdict::holds : Verdict::fails;
     } else {
       c.verdict = Verdict::untestable;
       c.note = "no shortest path (Dijkstra unavailable or goal unreachable)";
     }
-    claims.push_back(c);
+    checks.push_back(c);
   }
-  append(claims, paper_claims(results));
-  Json cj = Json::array();
-  for (const Claim& c : claims) cj.push_back(claim_json(c));
-  doc["claims"] = cj;
+  int kc = 0;
+  for (const std::string key : {"simple", "complex"}) {
+    const Json& res = at_or_null(results, {key});
+    const Json& opt = at_or_null(res, {"dijkstra", "summary", "length", "min"});
+    std::int64_t found = 0, valid = 0, shorter = 0;
+    for (auto it = res.begin(); it != res.end(); ++it) {
+      if (!it->value("available", false)) continue;
+      found += at_or_null(*it, {"summary", "found"}).get<std::int64_t>();
+      valid += at_or_null(*it, {"summary", "valid"}).get<std::int64_t>();
+      if (opt.is_number())
+        for (const double x : values_first(*it, "length", -1)) shorter += x < opt.get<double>() - 1e-9 ? 1 : 0;
+    }
+    Claim v;
+    v.id = fmt::format("C.{}", ++kc);
+    v.text = fmt::format("every path returned on the {} map is valid (metrics.valid-path, {} policy)", key,
+                         grid::to_string(cfg.policy));
+    v.source = "pathref";
+    v.paper = "—";
+    v.ours = fmt::format("{} of {} found paths valid", valid, found);
+    v.rule = "all valid";
+    v.verdict = valid == found ? Verdict::holds : Verdict::fails;
+    checks.push_back(v);
+    Claim o;
+    o.id = fmt::format("C.{}", ++kc);
+    o.text = fmt::format("no path on the {} map is shorter than Dijkstra's optimum", key);
+    o.source = "pathref";
+    o.paper = "—";
+    o.ours = fmt::format("{} shorter", shorter);
+    o.rule = "none shorter (an optimum is a lower bound)";
+    o.verdict = opt.is_number() ? (shorter == 0 ? Verdict::holds : Verdict::fails) : Verdict::untestable;
+    checks.push_back(o);
+  }
+  Json chj = Json::array();
+  for (const Claim& c : checks) chj.push_back(claim_json(c));
+  doc["checks"] = chj;
+
+  std::vector<Claim> claims = paper_claims(results, jc);
+  {
+    // Eq. 18 (issue 11, spec/shi2022-ga.md "Measured"): fit_3 sums over the nodes and dominates the
+    // weighted fitness of IGA, IGA* and IHA, so every claim that reads one of them rests on that
+    // reading. A claim reads a planner iff removing its series changes the claim.
+    Json removed = results;
+    for (auto it = removed.begin(); it != removed.end(); ++it)
+      for (const char* p : {"iga-shi", "iga-shi-nomax", "iha"})
+        if (it.value().is_object() && it.value().contains(p)) it.value()[p] = nullptr;
+    const std::vector<Claim> base = paper_claims(removed, jc);
+    for (std::size_t i = 0; i < claims.size() && i < base.size(); ++i)
+      if (claim_json(base[i]) != claim_json(claims[i]))
+        claims[i].depends_on.push_back(
+            "the reading of Eq. 18 (fit_3 = a sum over the path's nodes, shi2022.eq18), under which the weighted "
+            "fitness of IGA/IGA*/IHA prefers paths with more nodes (see \"Known problem\"; readings `length`, "
+            "`invlen` show IHA without it)");
+  }
   Json rj = Json::array();
   Json readings = Json::array();
   for (const ShiReading& r : shi2022_readings()) {
     readings.push_back(Json{{"key", r.key}, {"suffix", r.suffix}, {"label", r.label}, {"planners", r.planners},
                             {"params", r.params}});
-    for (const Claim& c : reading_claims(results, r)) rj.push_back(claim_json(c));
+    for (const Claim& c : reading_claims(results, r, jc)) {
+      rj.push_back(claim_json(c));
+      const std::string base_id = c.id.substr(0, c.id.size() - r.suffix.size());
+      for (Claim& b : claims)
+        if (b.id == base_id)
+          b.depends_on.push_back("the default of the reading `" + r.key + "` (alternative: " + c.id + ")");
+    }
   }
+  Json cj = Json::array();
+  for (const Claim& c : claims) cj.push_back(claim_json(c));
+  doc["claims"] = cj;
   doc["protocol"]["readings"] = readings;
   doc["reading_claims"] = rj;
   Json prov = provenance_json(cfg.provenance);
@@ -628,6 +747,140 @@ std::vector<std::pair<std::string, std::string>> shi2022_figures(const Json& doc
   return figs;
 }
 
+namespace {
+/// Why a planner of the protocol runs with the parameters it does (printed beside them).
+std::string shi_param_why(const std::string& name) {
+  if (name == "ga") return "Shi's single GA with Table 1's GA parameters (registered defaults, spec/shi2022-ga.md)";
+  if (name == "aco") return "the plain colony with Table 1's ACO parameters (registered defaults, spec/shi2022-aco.md)";
+  if (name == "iaco-shi") return "Shi's IACO, Table 1 (spec/shi2022-aco.md)";
+  if (name == "iaco-shi-nomin") return "IACO without ρ_min (Figure 10's IACO*), otherwise as IACO";
+  if (name == "iga-shi") return "Shi's IGA, Table 1 (spec/shi2022-ga.md)";
+  if (name == "iga-shi-nomax") return "IGA without the P_m_max cap (Figure 10's IGA*), otherwise as IGA";
+  if (name == "hybrid-ga-aco")
+    return "the traditional hybrid (Bao et al.) as Shi describes it — a reconstruction: a plain colony seeds a plain "
+           "GA; Table 1's parameters (spec/shi2022-ga.md, shi2022.plan.hybrid)";
+  if (name == "iha") return "Shi's IHA: IACO seeds IGA, Table 1 (spec/shi2022-ga.md, shi2022.plan.iha)";
+  if (name == "astar" || name == "dijkstra") return "reference optimum (deterministic, one run)";
+  return "registered defaults";
+}
+
+std::string params_text(const Json& p) {
+  if (!p.is_object() || p.empty()) return "—";
+  std::string t;
+  for (auto it = p.begin(); it != p.end(); ++it)
+    t += (t.empty() ? "" : ", ") + it.key() + " = " + (it.value().is_string() ? it.value().get<std::string>() : it.value().dump());
+  return "`" + t + "`";
+}
+
+/// The parameters table: every planner's params_used (as the planner reports them) and why.
+std::string shi_params_table(const Json& results) {
+  std::string s = md_row({"planner", "parameters used (params_used of its runs)", "why these"});
+  s += md_row({"---", "---", "---"});
+  for (const std::string& name : shi2022_planners()) {
+    const Json& r = at_or_null(results, {name});
+    if (!r.value("available", false)) {
+      s += md_row({"`" + name + "`", "not available in this build", shi_param_why(name)});
+      continue;
+    }
+    s += md_row({"`" + name + "`", params_text(r.at("params_used")), shi_param_why(name)});
+  }
+  return s;
+}
+
+/// The GA populations the GA-based planners built (per-run `population` of reproduce.json): a
+/// hybrid whose GA population holds only injected colony paths is its colony's result, and the
+/// report must say so (issue 11).
+std::string shi_population_table(const Json& doc) {
+  std::string s;
+  bool any = false;
+  std::string rows = md_row({"map", "planner", "runs", "mean population", "from the §4.2 initialisation",
+                             "from the colony", "runs whose initialisation was exhausted", "mean random chains tried"});
+  rows += md_row({"---", "---", "---:", "---:", "---:", "---:", "---:", "---:"});
+  for (const std::string key : {"simple", "complex"}) {
+    const Json& res = at_or_null(doc, {"results", key});
+    for (const std::string name : {"ga", "iga-shi", "iga-shi-nomax", "hybrid-ga-aco", "iha"}) {
+      const Json& runs = at_or_null(res, {name, "runs"});
+      if (!runs.is_array() || runs.empty()) continue;
+      double size = 0, init = 0, aco = 0, chains = 0;
+      std::int64_t n = 0, exhausted = 0, with_size = 0, with_chains = 0;
+      for (const Json& r : runs) {
+        ++n;
+        const Json& p = at_or_null(r, {"population"});
+        if (!p.is_object()) continue;
+        if (p.contains("population_size")) {
+          ++with_size;
+          size += p.at("population_size").get<double>();
+          init += p.value("population_init", 0.0);
+          aco += p.value("population_aco", 0.0);
+        }
+        if (p.contains("init_chains")) {
+          ++with_chains;
+          chains += p.at("init_chains").get<double>();
+        }
+        if (p.contains("init_exhausted")) {
+          const Json& e = p.at("init_exhausted");
+          if (e.is_boolean() ? e.get<bool>() : (e.is_number() && e.get<double>() > 0)) ++exhausted;
+        }
+      }
+      if (with_size == 0 && with_chains == 0) continue;
+      any = true;
+      auto avg = [](double v, std::int64_t k) { return k == 0 ? std::string("not reported") : fixed(v / static_cast<double>(k), 1); };
+      rows += md_row({key, planner_label(name), std::to_string(n), avg(size, with_size), avg(init, with_size),
+                      avg(aco, with_size), with_size == 0 ? std::string("not reported") : std::to_string(exhausted),
+                      avg(chains, with_chains)});
+    }
+  }
+  if (!any)
+    return "This build's GA-based planners do not report the population they built (`population_*` in their "
+           "`extra`), so the report cannot show it.\n";
+  s += "Per run, the GA-based planners report how their GA population was filled (`population` of each run in the "
+       "JSON; spec/shi2022-ga.md). A hybrid whose population holds only colony paths (nothing from the "
+       "initialisation) is its colony's result with a GA polish, and the verdicts on it are read that way.\n\n";
+  return s + rows;
+}
+
+/// The mean of results.MAP.PLANNER.summary.length.mean as text ("—" when absent).
+std::string mean_length(const Json& doc, const std::string& map_key, const std::string& planner) {
+  return md_number(at_or_null(doc, {"results", map_key, planner, "summary", "length", "mean"}), 2);
+}
+
+/// The known problem of the weighted fitness under the Eq. 18 reading (issue 11), with this run's
+/// numbers: IHA against the colony it starts from (iaco-shi: the same parameters and, for a seed,
+/// the same draws), IGA against the single GA.
+std::string shi_eq18_note(const Json& doc) {
+  std::string s = "## Known problem: the weighted fitness prefers long paths (Eq. 18 reading)\n\n";
+  s += "IGA, IGA* and IHA rank individuals by the weighted fitness a·fit_1 + b·fit_2 + c·fit_3 of Eq. 14 "
+       "(Table 1: a = 5, b = 4, c = 1). pathref reads fit_3 of Eq. 18 (the safety factor) as a sum over the path's "
+       "nodes (shi2022.eq18), so it grows with the number of nodes, while fit_1 = 1/length is about 0.03 on these "
+       "maps: the fitness rewards long paths. Now that the §4.2 initialisation builds the GA population (issue 11; "
+       "before, IHA's population was only its 10 injected ant paths and IHA returned its colony's result), IHA and "
+       "IGA select and return long paths. In this run:\n\n";
+  s += md_row({"map", "IHA mean length", "its colony (IACO, same seeds and parameters) mean length",
+               "IGA mean length", "GA mean length", "IHA with `result_by = length` mean length",
+               "IHA with `fitness = inverse_length` mean length"});
+  s += md_row({"---", "---:", "---:", "---:", "---:", "---:", "---:"});
+  for (const std::string key : {"simple", "complex"})
+    s += md_row({key, mean_length(doc, key, "iha"), mean_length(doc, key, "iaco-shi"), mean_length(doc, key, "iga-shi"),
+                 mean_length(doc, key, "ga"), mean_length(doc, key, "iha@length"), mean_length(doc, key, "iha@invlen")});
+  s += "\nThis is a consequence of pathref's reading of Eq. 18, not a finding about the paper's algorithm: the paper "
+       "reports IHA shorter than its colony and its GA. Eq. 18's reading has not yet been re-decided under the "
+       "defaults rule (spec/README.md; spec/shi2022-ga.md \"Measured\"), so **every verdict on IHA, IGA and IGA* "
+       "depends on the Eq. 18 reading** and is marked † with that dependency in [Claims](#claims). The readings "
+       "`length` (the shortest path evaluated) and `invlen` (Eq. 10's fitness) in [Readings that change the "
+       "outcome](#readings-that-change-the-outcome) show the lengths IHA reaches without it.\n\n";
+  return s;
+}
+
+/// The claims whose verdict changed between n and 2n runs, with the explanation.
+std::string md_changes(const Json& claims) {
+  std::string s;
+  for (const Json& c : claims)
+    if (c.value("changed", false))
+      s += fmt::format("- {}: {}\n", c.at("id").get<std::string>(), c.at("change_note").get<std::string>());
+  return s.empty() ? "No verdict changes between n and 2n runs.\n" : s;
+}
+}  // namespace
+
 std::string shi2022_markdown(const Json& doc, const std::string& figure_dir, const std::string& json_name) {
   std::string s;
   const Json& proto = doc.at("protocol");
@@ -639,7 +892,16 @@ std::string shi2022_markdown(const Json& doc, const std::string& figure_dir, con
   if (proto.at("quick").get<bool>())
     s += "**QUICK RUN** (`--quick`: reduced iterations, ants and population; a smoke test, not a reproduction).\n\n";
   s += "## Summary\n\n" + md_verdict_summary(doc.at("claims")) +
-       "\nThe verdict of each claim and the rule that decided it are in [Claims](#claims). Protocol: spec/reproduce.md.\n\n";
+       "\nThe verdict of each claim and the test or margin that decided it are in [Claims](#claims); the rules "
+       "(spec/stats.md, spec/reproduce.md reproduce.judge) were fixed before these runs. pathref's own checks "
+       "(the maps' optima, valid paths) are listed apart in [pathref's checks](#pathrefs-checks) and are not paper "
+       "claims. A † marks a verdict that rests on a reconstructed or chosen reading; the claim that judges it under "
+       "the alternative is named beside it.\n\n";
+  if (doc.contains("checks")) {
+    const std::string cs = md_verdict_summary(doc.at("checks"), true);
+    s += "pathref's own " + cs.substr(0, cs.find('\n')) + "\n\n";
+  }
+  s += shi_eq18_note(doc);
   s += "## Protocol\n\n";
   const bool paper = proto.value("orientation", "paper") == "paper";
   s += fmt::format("- maps: simple = `{}`, complex = `{}` (0/1 matrices); start = the first cell of the file's first "
@@ -657,10 +919,22 @@ std::string shi2022_markdown(const Json& doc, const std::string& figure_dir, con
                    "shortest paths are the printed optima 29.8 and 31.56 (claims M.1, M.2); under corner cutting "
                    "they would be 28.63 and 30.97.\n",
                    proto.at("policy").get<std::string>());
-  s += fmt::format("- {} runs per stochastic planner and map, seeds {}–{} (A* and Dijkstra: one run); every planner "
-                   "with its registered defaults (= Table 1; the exact values are in `{}` under "
-                   "`results.MAP.PLANNER.params_used`).\n",
-                   runs, seeds[0].get<std::int64_t>(), seeds[1].get<std::int64_t>(), json_name);
+  const Json& seeds2 = at_or_null(proto, {"seeds_2n"});
+  s += fmt::format("- the paper's protocol is n = {} runs per stochastic planner and map (seeds {}–{}); pathref ran "
+                   "2n = {} (seeds {}–{}) and judges every claim on the first n and on all 2n (A* and Dijkstra: one "
+                   "run). The tables below summarise all 2n runs. Every planner runs with its registered defaults "
+                   "(= Table 1), listed with the reason in [Parameters](#parameters) and in `{}` under "
+                   "`results.MAP.PLANNER.params_used`.\n",
+                   runs, seeds[0].get<std::int64_t>(), seeds[1].get<std::int64_t>(),
+                   proto.value("runs_2n", runs), seeds2.is_array() ? seeds2[0].get<std::int64_t>() : 0,
+                   seeds2.is_array() ? seeds2[1].get<std::int64_t>() : 0, json_name);
+  s += "- judging (spec/reproduce.md reproduce.judge, spec/stats.md): a printed value holds when the 95 % percentile "
+       "bootstrap interval (2000 resamples, seeded with the first seed) of pathref's statistic lies within the "
+       "paper's value ± a margin fixed per kind of quantity before any run (lengths ± 1 %, turns ± 1, iterations "
+       "± 10 % (at least 1), percentages ± 5 points); entirely outside: \"does not hold — pathref better/worse\"; "
+       "otherwise \"inconclusive\" with its leaning. A comparison holds when the two-sided Mann–Whitney U test is "
+       "significant at α = 0.05 in the claimed direction (Welch's t printed beside it); significant the other way: "
+       "\"does not hold — the opposite is significant\"; otherwise \"not significant\" with the observed direction.\n";
   s += "- per run: path length (metrics.length), turns (metrics.turns), iterations to converge (metrics.converge of "
        "the planner's best-so-far curve), validity (metrics.valid-path), drive time (drive.path-time, Mecanum base, "
        "1 m cells, spec/mecanum.md defaults: a measure of what the turns cost, not a paper quantity) and wall-clock "
@@ -746,8 +1020,18 @@ std::string shi2022_markdown(const Json& doc, const std::string& figure_dir, con
       s += "## Runs without a path\n\nStatistics are over the runs that found a path; a planner without any has no "
            "statistics, and the claims that need it are \"cannot be tested\".\n\n" + notes + "\n";
   }
+  s += "## The GA population each planner actually built\n\n" + shi_population_table(doc) + "\n";
+  s += "## Parameters\n\nEvery planner of the protocol with the parameters its runs used (simple map; the "
+       "complex map's are the same) and why:\n\n";
+  s += shi_params_table(at_or_null(doc, {"results", "simple"})) + "\n";
   s += "## Claims\n\n";
   s += md_claims(doc.at("claims")) + "\n";
+  s += "### Verdicts that change between n and 2n runs\n\n" + md_changes(doc.at("claims")) + "\n";
+  if (doc.contains("checks")) {
+    s += "## pathref's checks\n\nThese test the identification of the maps and pathref itself, not the paper; they "
+         "are not counted among the paper's claims.\n\n";
+    s += md_claims(doc.at("checks")) + "\n";
+  }
   s += "## Provenance\n\n" + md_provenance(doc.at("provenance"), json_name);
   return s;
 }

@@ -35,6 +35,10 @@ void register_all_modules(Registry& r) {
   register_han_sim_rules(r);
   register_ga_planner_rules(r);
   register_aco_planner_rules(r);
+  register_cin2021_rules(r);
+  register_cin2021_ml_rules(r);
+  register_stats_rules(r);
+  register_sensors2023_dwa_rules(r);
   extensions().sealed = true;
   for (const ModuleRegistration fn : extensions().fns) fn(r);
 }

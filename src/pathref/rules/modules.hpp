@@ -15,6 +15,10 @@ void register_han_rules(Registry& r);
 void register_han_sim_rules(Registry& r);
 void register_ga_planner_rules(Registry& r);
 void register_aco_planner_rules(Registry& r);
+void register_cin2021_rules(Registry& r);
+void register_cin2021_ml_rules(Registry& r);
+void register_stats_rules(Registry& r);
+void register_sensors2023_dwa_rules(Registry& r);
 void register_all_modules(Registry& r);
 
 /// Modules of libraries layered on pathref that the core library cannot call (the inflation.*
