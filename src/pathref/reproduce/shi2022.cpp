@@ -845,8 +845,8 @@ std::string mean_length(const Json& doc, const std::string& map_key, const std::
 }
 
 /// The known problem of the weighted fitness under the Eq. 18 reading (issue 11), with this run's
-/// numbers: IHA against the colony it starts from (iaco-shi: the same parameters and, for a seed,
-/// the same draws), IGA against the single GA.
+/// numbers: IHA against IACO (iaco-shi: the parameters of the colony IHA starts from, same seeds),
+/// IGA against the single GA.
 std::string shi_eq18_note(const Json& doc) {
   std::string s = "## Known problem: the weighted fitness prefers long paths (Eq. 18 reading)\n\n";
   s += "IGA, IGA* and IHA rank individuals by the weighted fitness a·fit_1 + b·fit_2 + c·fit_3 of Eq. 14 "
@@ -855,7 +855,7 @@ std::string shi_eq18_note(const Json& doc) {
        "maps: the fitness rewards long paths. Now that the §4.2 initialisation builds the GA population (issue 11; "
        "before, IHA's population was only its 10 injected ant paths and IHA returned its colony's result), IHA and "
        "IGA select and return long paths. In this run:\n\n";
-  s += md_row({"map", "IHA mean length", "its colony (IACO, same seeds and parameters) mean length",
+  s += md_row({"map", "IHA mean length", "IACO (the colony IHA starts from: same parameters, same seeds) mean length",
                "IGA mean length", "GA mean length", "IHA with `result_by = length` mean length",
                "IHA with `fitness = inverse_length` mean length"});
   s += md_row({"---", "---:", "---:", "---:", "---:", "---:", "---:"});
