@@ -9,8 +9,8 @@ pathref=$1
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 
 "$pathref" plan --builtin grid20 --algo astar-kinematic >"$tmp/report.txt"
-for word in "algo        astar-kinematic" "directions=5" "weight=\"linear\"" "redundancy=\"secondary\"" \
-            "spacing=0.1" "end=\"repeated\"" "child_nodes" "turns_key" "points: see --json"; do
+for word in "algo        astar-kinematic" "directions=5" "weight=linear" "redundancy=secondary" \
+            "spacing=0.1" "end=repeated" "child_nodes" "turns_key" "points: see --json"; do
   grep -qF -- "$word" "$tmp/report.txt" || { echo "FAIL: report lacks '$word'"; cat "$tmp/report.txt"; exit 1; }
 done
 

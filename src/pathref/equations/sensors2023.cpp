@@ -142,6 +142,7 @@ double f_weighted(double g, double h, double r, double R, WeightForm form) {
 
 bool segment_blocked(const grid::Grid& g, grid::Cell a, grid::Cell b) {
   require(g.in_bounds(a) && g.in_bounds(b), "sensors2023: segment end outside the grid");
+  if (a == b) return g.blocked(a);  // a point: the centre lies in the open square of its cell
   // Doubled coordinates: centre of (x, y) = (2x + 1, 2y + 1); cell (x, y) = [2x, 2x+2] x [2y, 2y+2].
   const std::int64_t ax = 2 * a.x + 1;
   const std::int64_t ay = 2 * a.y + 1;

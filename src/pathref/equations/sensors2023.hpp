@@ -96,6 +96,7 @@ enum class WeightForm {
 /// Touching a cell's corner or edge is not a collision -- which is why the ordinary removal can
 /// leave paths "tangent to the vertices of the obstacles" (§2.3).
 /// Source: Sensors 2023 §2.3 (ordinary removal "with collision detection"). Spec: sensors2023.eq5.
+/// a == b: whether a is blocked (its centre lies in its open square).
 /// Pre: a, b in bounds (DomainError).
 [[nodiscard]] bool segment_blocked(const grid::Grid& g, grid::Cell a, grid::Cell b);
 

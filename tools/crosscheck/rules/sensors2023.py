@@ -133,6 +133,8 @@ def rule_eq4(inp):
 
 def segment_blocked(m, a, b):
     require(m.inside(a) and m.inside(b), "segment end outside the grid")
+    if a == b:
+        return a in m.blocked
     ax, ay, bx, by = 2 * a[0] + 1, 2 * a[1] + 1, 2 * b[0] + 1, 2 * b[1] + 1
     dx, dy = bx - ax, by - ay
     for x in range(min(a[0], b[0]), max(a[0], b[0]) + 1):
