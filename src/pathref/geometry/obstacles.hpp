@@ -17,7 +17,7 @@
 
 namespace pathref::geometry {
 
-using continuous::Vec2;
+// Vec2 is geometry::Vec2 (geometry/vec2.hpp); continuous::Vec2 is the same type.
 
 /// Obstacle polygons (exact vertices) with an exact inflation radius r, in a world rectangle.
 /// Immutable; copies share the prepared geometry.
