@@ -144,6 +144,10 @@ TEST_CASE("prop_sensors2023_planner_invariants") {
         }
       }
     }
+    if (r.key_nodes.size() == 1 && o.end == pathref::bspline::EndHandling::clamped) {
+      RC_ASSERT(!r.has_curve);  // start == goal: one key node, no clamped curve (curves.knots)
+      return;
+    }
     RC_ASSERT(r.has_curve);
     const auto& p = r.curve.points;
     RC_ASSERT(std::abs(p.front().x - cx(sc.start.x)) <= 1e-12);
