@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "pathref/core/error.hpp"
@@ -139,6 +140,50 @@ std::vector<Vec2> control_polygon(std::span<const Vec2> points, int degree, EndH
   out.insert(out.end(), points.begin(), points.end());
   out.insert(out.end(), extra, points.back());
   return out;
+}
+
+KnotSpacing parse_knot_spacing(std::string_view name) {
+  if (name == "uniform") return KnotSpacing::uniform;
+  if (name == "chord") return KnotSpacing::chord;
+  throw UsageError("knots must be uniform or chord, not '" + std::string(name) + "'");
+}
+
+std::string_view to_string(KnotSpacing k) noexcept {
+  return k == KnotSpacing::chord ? "chord" : "uniform";
+}
+
+std::vector<double> clamped_chord_knots(std::span<const Vec2> control, int degree) {
+  const std::size_t m = control.size();
+  check_count(m, degree);
+  for (const Vec2& q : control) require(finite(q), "bspline: control points must be finite");
+  const auto p = static_cast<std::size_t>(degree);
+  std::vector<double> t(m, 0.0);
+  for (std::size_t i = 1; i < m; ++i) {
+    const double dx = control[i].x - control[i - 1].x;
+    const double dy = control[i].y - control[i - 1].y;
+    t[i] = t[i - 1] + std::sqrt((dx * dx) + (dy * dy));
+  }
+  const double L = t[m - 1];
+  std::vector<double> u = clamped_knots(m, degree);
+  if (!(L > 0.0)) return u;
+  const auto top = static_cast<double>(m - p);
+  const double den = static_cast<double>(p) * L;
+  for (std::size_t j = 1; j + p < m; ++j) {
+    double s = 0.0;
+    for (std::size_t i = j; i < j + p; ++i) s = s + t[i];
+    u[p + j] = std::min(top, (top * s) / den);
+  }
+  return u;
+}
+
+Curve make_curve(std::span<const Vec2> points, int degree, EndHandling end, KnotSpacing spacing) {
+  if (spacing == KnotSpacing::uniform) return make_curve(points, degree, end);
+  require(end == EndHandling::clamped, "bspline: chord-length knots need end handling clamped");
+  Curve c;
+  c.degree = degree;
+  c.control = control_polygon(points, degree, end);
+  c.knots = clamped_chord_knots(c.control, degree);
+  return c;
 }
 
 Curve make_curve(std::span<const Vec2> points, int degree, EndHandling end) {
@@ -326,6 +371,50 @@ Samples sample(const Curve& c, double spacing) {
   s.params.push_back(U[m]);
   s.points.push_back(evaluate(c, U[m]));  // the closed right end (span_index)
   return s;
+}
+
+Derivatives derivatives(const Curve& c, double u) {
+  check_curve(c);
+  const std::size_t k = span_index(c.knots, c.degree, c.control.size(), u);
+  const auto p = static_cast<std::size_t>(c.degree);
+  const std::vector<double>& U = c.knots;
+  Derivatives d;
+  d.point = evaluate_on_span(c, k, u);
+  // Q_j for j = k - p + 1 .. k (index j - (k - p + 1)); zero denominators give 0.
+  std::vector<Vec2> q(p, Vec2{0.0, 0.0});
+  for (std::size_t r = 0; r < p; ++r) {
+    const std::size_t j = k - p + 1 + r;
+    const double den = U[j + p] - U[j];
+    if (den == 0.0) continue;
+    q[r] = Vec2{(static_cast<double>(p) * (c.control[j].x - c.control[j - 1].x)) / den,
+                (static_cast<double>(p) * (c.control[j].y - c.control[j - 1].y)) / den};
+  }
+  const std::vector<double> n1 = local_basis(U, p - 1, k, u);  // N_{k-p+1..k, p-1}
+  for (std::size_t r = 0; r < p; ++r) {
+    d.first.x = d.first.x + n1[r] * q[r].x;
+    d.first.y = d.first.y + n1[r] * q[r].y;
+  }
+  if (p >= 2) {
+    const std::vector<double> n2 = local_basis(U, p - 2, k, u);  // N_{k-p+2..k, p-2}
+    for (std::size_t r = 0; r + 1 < p; ++r) {
+      const std::size_t j = k - p + 2 + r;
+      const double den = U[j + p - 1] - U[j];
+      if (den == 0.0) continue;
+      const double rx = (static_cast<double>(p - 1) * (q[r + 1].x - q[r].x)) / den;
+      const double ry = (static_cast<double>(p - 1) * (q[r + 1].y - q[r].y)) / den;
+      d.second.x = d.second.x + n2[r] * rx;
+      d.second.y = d.second.y + n2[r] * ry;
+    }
+  }
+  return d;
+}
+
+double curvature(const Curve& c, double u) {
+  const Derivatives d = derivatives(c, u);
+  const double s2 = (d.first.x * d.first.x) + (d.first.y * d.first.y);
+  if (s2 == 0.0) return std::numeric_limits<double>::infinity();
+  const double cross = (d.first.x * d.second.y) - (d.first.y * d.second.x);
+  return cross / (s2 * std::sqrt(s2));
 }
 
 }  // namespace pathref::bspline

@@ -21,8 +21,9 @@
 /// Source: de Boor (1972), doi:10.1016/0021-9045(72)90080-9; Cox (1972),
 /// doi:10.1093/imamat/10.2.134; Piegl & Tiller, The NURBS Book (1997) A2.1–A2.2;
 /// Sensors 2023, 23(8), 4102, doi:10.3390/s23084102, Eq. (6)–(8), (A1)–(A3).
-/// Spec: spec/curves.md (curves.knots, curves.sample), spec/sensors2023.md (sensors2023.eq6,
-/// eq7, eq8, a1, a2, a3)
+/// Spec: spec/curves.md (curves.knots, curves.sample, curves.curvature), spec/sensors2023.md
+/// (sensors2023.eq6, eq7, eq8, a1, a2, a3), spec/cin2021-srrt.md (cin2021.eq12, cin2021.eq13,
+/// cin2021.eq14, cin2021.eq15: the same functions)
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -67,9 +68,30 @@ struct Curve {
 [[nodiscard]] std::vector<double> uniform_knots(std::size_t control_count, int degree);
 
 /// Clamped (open uniform) knot vector: u_0 = .. = u_p = 0, u_{p+j} = j for j = 1 .. m - p - 1,
-/// u_m = .. = u_{m+p} = m - p. Source: cin2021 Eq. (15); Piegl & Tiller (1997) Sec. 2.2.
-/// Spec: curves.knots. Pre: as uniform_knots. Golden: golden/curves/curves.knots.json
+/// u_m = .. = u_{m+p} = m - p. Source: cin2021 Eq. (15) (the paper's [0, 1] is the affine image
+/// u / (m - p): the same curve); Piegl & Tiller (1997) Sec. 2.2.
+/// Spec: curves.knots, cin2021.eq15. Pre: as uniform_knots.
+/// Golden: golden/curves/curves.knots.json, golden/cin2021-srrt/cin2021.eq15.json
 [[nodiscard]] std::vector<double> clamped_knots(std::size_t control_count, int degree);
+
+/// How the interior knots of a clamped knot vector are spaced (spec cin2021.eq15, param
+/// `knots`): uniform (clamped_knots, default) or by chord length (clamped_chord_knots).
+enum class KnotSpacing { uniform, chord };
+/// "uniform" | "chord" -> spacing; UsageError otherwise. Spec: cin2021.eq15.
+[[nodiscard]] KnotSpacing parse_knot_spacing(std::string_view name);
+[[nodiscard]] std::string_view to_string(KnotSpacing k) noexcept;
+
+/// Clamped knot vector with chord-length interior knots over the control points P_0 .. P_{m-1}:
+/// t_0 = 0, t_i = t_{i-1} + |P_i - P_{i-1}| (|v| = sqrt(vx*vx + vy*vy), i = 1 .. m - 1, left to
+/// right), L = t_{m-1}; u_0 = .. = u_p = 0, u_m = .. = u_{m+p} = m - p and, for
+/// j = 1 .. m - p - 1, with s_j = t_j + .. + t_{j+p-1} (left to right),
+/// u_{p+j} = min(m - p, ((m - p) * s_j) / (p * L)) (the averaging technique of Piegl & Tiller
+/// (1997) Eq. (9.8) on chord-length parameters, scaled to the domain of clamped_knots).
+/// L = 0 (all points equal) gives clamped_knots. Non-decreasing (rounding is monotone).
+/// Source: cin2021 Eq. (15) leaves the interior knots open; Piegl & Tiller (1997) Sec. 9.2.1.
+/// Spec: cin2021.eq15. Pre: control finite, 1 <= p <= max_degree, p + 1 <= m <=
+/// max_control_points (DomainError). Golden: golden/cin2021-srrt/cin2021.eq15.json
+[[nodiscard]] std::vector<double> clamped_chord_knots(std::span<const Vec2> control, int degree);
 
 /// The control polygon of an end handling: `repeated` prepends p - 1 copies of the first point
 /// and appends p - 1 copies of the last (each end point then appears p times); `clamped` and
@@ -84,6 +106,13 @@ struct Curve {
 /// points (DomainError; lower the degree with degree_for for few points).
 /// Golden: golden/curves/curves.knots.json
 [[nodiscard]] Curve make_curve(std::span<const Vec2> points, int degree, EndHandling end);
+
+/// make_curve with the interior knots of a clamped curve spaced by `spacing` (uniform:
+/// clamped_knots; chord: clamped_chord_knots). Spec: cin2021.eq15.
+/// Pre: as make_curve; KnotSpacing::chord only with EndHandling::clamped (DomainError).
+/// Golden: golden/cin2021-srrt/cin2021.eq15.json
+[[nodiscard]] Curve make_curve(std::span<const Vec2> points, int degree, EndHandling end,
+                               KnotSpacing spacing);
 
 /// The degree to use for `point_count` points when `requested` is asked for: the largest
 /// p <= requested for which make_curve accepts the points (clamped / none: p <= m - 1;
@@ -103,7 +132,8 @@ struct Curve {
 void check_curve(const Curve& c);
 
 /// The knot span k of u: the k in [p, m - 1] with u_k <= u < u_{k+1}, or, for u = u_m, the
-/// largest k with u_k < u_{k+1} = u_m. Spec: sensors2023.eq7 (the closed right end).
+/// largest k with u_k < u_{k+1} = u_m: N_{k,0}(u) = 1 and every other N_{i,0}(u) = 0.
+/// Spec: sensors2023.eq7 (the closed right end), cin2021.eq13.
 /// Pre: u in domain(c) (DomainError), c valid.
 [[nodiscard]] std::size_t span_index(const std::vector<double>& knots, int degree,
                                      std::size_t control_count, double u);
@@ -121,7 +151,7 @@ void check_curve(const Curve& c);
 
 /// The curve point P(u) = sum_i P_i N_{i,p}(u) (Eq. 6), the sum taken over i = 0 .. m - 1 in
 /// order, x and y separately, with the basis of basis_functions.
-/// Source: Sensors 2023 Eq. (6); cin2021 Eq. (12). Spec: sensors2023.eq6.
+/// Source: Sensors 2023 Eq. (6); cin2021 Eq. (12). Spec: sensors2023.eq6, cin2021.eq12.
 /// Pre: check_curve(c); u in domain(c) (DomainError). Post: in the convex hull of the p + 1
 /// control points P_{k-p} .. P_k of u's span k. Golden: golden/sensors2023/sensors2023.eq6.json
 [[nodiscard]] Vec2 evaluate(const Curve& c, double u);
@@ -175,5 +205,30 @@ struct Samples {
 /// Post: params strictly increasing; |points[i+1] - points[i]| <= chord (1 + 1e-12) + 1e-12;
 /// chord <= spacing. Golden: golden/curves/curves.sample.json
 [[nodiscard]] Samples sample(const Curve& c, double spacing);
+
+/// P(u), P'(u) and P''(u) of a curve, on the span of span_index (one-sided at knots: the
+/// derivative from the right, at u_m from the left).
+struct Derivatives {
+  Vec2 point;
+  Vec2 first;
+  Vec2 second;
+};
+
+/// The curve point and its first two derivatives at u (spec curves.curvature), on span k:
+/// P'(u) = sum_{j=k-p+1..k} Q_j N_{j,p-1}(u) with Q_j = (p (P_j - P_{j-1})) / (u_{j+p} - u_j);
+/// P''(u) = sum_{j=k-p+2..k} ((p - 1) (Q_j - Q_{j-1})) / (u_{j+p-1} - u_j) N_{j,p-2}(u) (p >= 2;
+/// 0 for p = 1); a term with a zero denominator is 0; the bases N_{.,p-1}, N_{.,p-2} are the
+/// Cox–de Boor values on the same knot vector (degree 0 = the indicator of span k); sums in
+/// increasing j, x and y separately. Source: de Boor (1972); Piegl & Tiller (1997) Eq. (3.3)-(3.4).
+/// Spec: curves.curvature. Pre: check_curve(c); u in domain(c) (DomainError).
+/// Golden: golden/curves/curves.curvature.json
+[[nodiscard]] Derivatives derivatives(const Curve& c, double u);
+
+/// Signed curvature kappa(u) = cross / (s2 * sqrt(s2)) with cross = (x' y'') - (y' x''),
+/// s2 = (x' x') + (y' y') from derivatives(); +inf where P'(u) = 0 (no tangent: the curve may
+/// have a cusp there, so a maximum over samples flags it). Positive = turning left.
+/// Source: pathref (cin2021 issue: "curvature of the smoothed curve"; neither paper defines it).
+/// Spec: curves.curvature. Pre: as derivatives. Golden: golden/curves/curves.curvature.json
+[[nodiscard]] double curvature(const Curve& c, double u);
 
 }  // namespace pathref::bspline

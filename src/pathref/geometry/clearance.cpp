@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "pathref/continuous/rrt.hpp"
 #include "pathref/core/error.hpp"
 
 namespace pathref::geometry {
@@ -126,23 +127,20 @@ double segment_box_distance(Vec2 a, Vec2 b, double x0, double y0, double x1, dou
   return box_distance(a, b, x0, y0, x1, y1);
 }
 
-Clearance clearance(const grid::Grid& g, std::span<const Vec2> points,
-                    const ClearanceOptions& options) {
+namespace {
+
+/// The shared part of curves.clearance and curves.polygon-clearance: checks, the exact polyline
+/// distance from `segment_distance(a, b, cap)` (the segment's distance, or any value >= cap when
+/// it is >= cap), the bounds from `point_distance(p, cap)` and the verdict.
+template <class SegmentDistance, class PointDistance>
+Clearance clearance_of(std::span<const Vec2> points, const ClearanceOptions& options,
+                       const SegmentDistance& segment_distance, const PointDistance& point_distance) {
   require(!points.empty(), "clearance: no points");
   for (const Vec2& p : points) require(finite(p), "clearance: points must be finite");
   require(std::isfinite(options.inflation) && options.inflation >= 0.0,
           "clearance: inflation must be finite and >= 0");
   require(std::isfinite(options.tolerance) && options.tolerance >= 0.0,
           "clearance: tolerance must be finite and >= 0");
-  const auto w = static_cast<double>(g.width());
-  const auto h = static_cast<double>(g.height());
-
-  const auto point_distance = [&](Vec2 p, double cap) {
-    double d = options.border ? border_point(p, w, h) : inf;
-    d = std::min(d, segment_cells(g, p, p, std::min(cap, d)));
-    return d;
-  };
-
   Clearance out;
   out.distance = inf;
   // Segments (a single point: the point itself).
@@ -150,9 +148,7 @@ Clearance clearance(const grid::Grid& g, std::span<const Vec2> points,
   for (std::size_t s = 0; s < pieces; ++s) {
     const Vec2 a = points[s];
     const Vec2 b = points.size() == 1 ? points[s] : points[s + 1];
-    double d = inf;
-    if (options.border) d = std::min(border_point(a, w, h), border_point(b, w, h));
-    d = std::min(d, segment_cells(g, a, b, std::min(d, out.distance)));
+    const double d = segment_distance(a, b, out.distance);
     if (d < out.distance) {
       out.distance = d;
       out.segment = static_cast<std::int64_t>(s);
@@ -175,6 +171,45 @@ Clearance clearance(const grid::Grid& g, std::span<const Vec2> points,
     out.verdict = ClearanceVerdict::undetermined;
   }
   return out;
+}
+
+/// Distance from a point to the outside of [lo, hi] (0 if the point is not inside).
+double border_rect(Vec2 p, Vec2 lo, Vec2 hi) noexcept {
+  return std::max(0.0, std::min({p.x - lo.x, hi.x - p.x, p.y - lo.y, hi.y - p.y}));
+}
+
+}  // namespace
+
+Clearance clearance(const grid::Grid& g, std::span<const Vec2> points,
+                    const ClearanceOptions& options) {
+  const auto w = static_cast<double>(g.width());
+  const auto h = static_cast<double>(g.height());
+  const auto segment_distance = [&](Vec2 a, Vec2 b, double cap) {
+    double d = inf;
+    if (options.border) d = std::min(border_point(a, w, h), border_point(b, w, h));
+    return std::min(d, segment_cells(g, a, b, std::min(d, cap)));
+  };
+  const auto point_distance = [&](Vec2 p, double cap) {
+    double d = options.border ? border_point(p, w, h) : inf;
+    return std::min(d, segment_cells(g, p, p, std::min(cap, d)));
+  };
+  return clearance_of(points, options, segment_distance, point_distance);
+}
+
+Clearance clearance(const continuous::CollisionChecker& map, std::span<const Vec2> points,
+                    const ClearanceOptions& options) {
+  const Vec2 lo = map.lower();
+  const Vec2 hi = map.upper();
+  const auto segment_distance = [&](Vec2 a, Vec2 b, double /*cap*/) {
+    double d = inf;
+    if (options.border) d = std::min(border_rect(a, lo, hi), border_rect(b, lo, hi));
+    return std::min(d, map.segment_clearance(a, b));
+  };
+  const auto point_distance = [&](Vec2 p, double /*cap*/) {
+    const double d = options.border ? border_rect(p, lo, hi) : inf;
+    return std::min(d, map.segment_clearance(p, p));
+  };
+  return clearance_of(points, options, segment_distance, point_distance);
 }
 
 }  // namespace pathref::geometry

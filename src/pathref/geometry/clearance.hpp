@@ -14,8 +14,11 @@
 /// around the segment grown until it holds a cell no farther than the window's margin, which
 /// no cell outside the window can beat. Evaluated in binary64: the only roundings are those of
 /// the few products, sums and one sqrt per candidate (a few ulps of the distance).
+/// The polygon variant (cin2021's S-RRT on pathref-scene maps) takes each segment's distance from
+/// the continuous map (geometry::ObstacleMap: exact with CGAL, rounded to the nearest double) and
+/// shares the bounds and the verdict with the grid variant.
 /// Source: pathref (neither sensors2023 nor cin2021 checks its smoothed curve against the map).
-/// Spec: spec/curves.md r[curves.clearance]
+/// Spec: spec/curves.md r[curves.clearance], r[curves.polygon-clearance]
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -23,6 +26,10 @@
 
 #include "pathref/geometry/vec2.hpp"
 #include "pathref/grid/grid.hpp"
+
+namespace pathref::continuous {
+class CollisionChecker;
+}
 
 namespace pathref::geometry {
 
@@ -72,6 +79,19 @@ struct Clearance {
 /// Post: 0 <= lower <= distance <= upper (tolerance 0: all equal).
 /// Golden: golden/curves/curves.clearance.json
 [[nodiscard]] Clearance clearance(const grid::Grid& g, std::span<const Vec2> points,
+                                  const ClearanceOptions& options = {});
+
+/// The clearance of the polyline `points` against the obstacles of a continuous map (polygons):
+/// the distance of segment [a, b] is map.segment_clearance(a, b) (ObstacleMap: the exact
+/// distance to the closed polygons, without r, rounded to the nearest double; +inf without
+/// obstacles); with `border` the outside of the world rectangle [lower, upper] counts as an
+/// obstacle (distance of a point max(0, min(x - lo.x, hi.x - x, y - lo.y, hi.y - y))). The
+/// bounds (lower, upper with the tolerance), the verdict against `inflation` and `segment` are
+/// those of the grid variant (the same code). Source: pathref. Spec: curves.polygon-clearance.
+/// Pre: as the grid variant (DomainError). Post: 0 <= lower <= distance <= upper.
+/// Golden: golden/curves/curves.polygon-clearance.json
+[[nodiscard]] Clearance clearance(const continuous::CollisionChecker& map,
+                                  std::span<const Vec2> points,
                                   const ClearanceOptions& options = {});
 
 }  // namespace pathref::geometry

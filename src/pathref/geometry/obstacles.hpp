@@ -56,6 +56,8 @@ class ObstacleMap final : public continuous::CollisionChecker {
   [[nodiscard]] const std::vector<std::vector<Vec2>>& polygons() const;
   /// r rounded to a double (reports only).
   [[nodiscard]] double radius() const;
+  /// radius() (the CollisionChecker interface). Spec: cin2021.srrt.curve.
+  [[nodiscard]] double inflation() const override { return radius(); }
 
   struct Impl;
 

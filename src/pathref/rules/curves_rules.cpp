@@ -140,6 +140,108 @@ void register_curves_rules(Registry& r) {
                     {"segment", c.segment}};
       }});
 
+  r.add(Rule{
+      "curves.curvature",
+      "P(u), P'(u), P''(u) and the signed curvature of a B-spline (+inf where P'(u) = 0)",
+      "pathref::bspline::curvature",
+      {{"degree", "integer", "p"},
+       {"points", "point[]", "given points (with end), or knots + control"},
+       {"end", "string", "clamped | repeated (default) | none"},
+       {"knots", "number[]", "optional explicit knot vector (then control is required)"},
+       {"control", "point[]", "explicit control points"},
+       {"u", "number", "in [u_p, u_m]"}},
+      {{"point", "point", "P(u)"},
+       {"first", "point", "P'(u) (one-sided at knots, on span_index's span)"},
+       {"second", "point", "P''(u)"},
+       {"curvature", "number", "(x'y'' - y'x'') / |P'|^3; 'inf' where P'(u) = 0"}},
+      [](const Json& in) {
+        const bspline::Curve c = curve_arg(in);
+        const double u = arg_number(in, "u");
+        const auto d = bspline::derivatives(c, u);
+        return Json{{"point", point_json(d.point)},
+                    {"first", point_json(d.first)},
+                    {"second", point_json(d.second)},
+                    {"curvature", number(bspline::curvature(c, u))}};
+      }});
+
+  // ---- cin2021 S-RRT Eq. 12-15: the same B-spline functions, clamped knots ----
+  const auto clamped_curve = [](const Json& in) {
+    const auto pts = points_arg(in, "points");
+    const int p = bspline::degree_for(pts.size(), degree_arg(in), bspline::EndHandling::clamped);
+    const auto spacing = bspline::parse_knot_spacing(opt_string(in, "knots", "uniform"));
+    return bspline::make_curve(pts, p, bspline::EndHandling::clamped, spacing);
+  };
+  const std::vector<Field> clamped_inputs = {
+      {"points", "point[]", "the control points d_0 .. d_n (S-RRT's kept nodes)"},
+      {"degree", "integer", "requested degree k (lowered by degree_for for few points)"},
+      {"knots", "string", "interior knots: uniform (default) | chord"}};
+  r.add(Rule{
+      "cin2021.eq12",
+      "Clamped B-spline point P(u) = sum_i d_i N_{i,k}(u) over S-RRT's nodes (cin2021 Eq. 12)",
+      "pathref::bspline::evaluate",
+      [&] {
+        auto f = clamped_inputs;
+        f.push_back({"u", "number", "in [u_k, u_{n+1}] = [0, n + 1 - k]"});
+        return f;
+      }(),
+      {{"point", "point", "P(u)"}, {"degree", "integer", "the degree used"}},
+      [clamped_curve](const Json& in) {
+        const bspline::Curve c = clamped_curve(in);
+        return Json{{"point", point_json(bspline::evaluate(c, arg_number(in, "u")))},
+                    {"degree", c.degree}};
+      }});
+  r.add(Rule{
+      "cin2021.eq13",
+      "Degree-0 basis N_{i,0}(u) = 1 on [u_i, u_{i+1}) (closed at the domain's right end) (cin2021 Eq. 13)",
+      "pathref::bspline::span_index",
+      {{"knots", "number[]", "u_0 .. u_{m+p}"},
+       {"degree", "integer", "p (fixes the domain [u_p, u_m])"},
+       {"count", "integer", "m"},
+       {"u", "number", "in [u_p, u_m]"}},
+      {{"n0", "number[]", "N_{0,0}(u) .. N_{m+p-1,0}(u)"}, {"span", "integer", "the i with N_{i,0}(u) = 1"}},
+      [](const Json& in) {
+        const auto knots = arg_numbers(in, "knots");
+        const std::size_t k =
+            bspline::span_index(knots, degree_arg(in), count_arg(in, "count"), arg_number(in, "u"));
+        Json a = Json::array();
+        for (std::size_t i = 0; i + 1 < knots.size(); ++i) a.push_back(i == k ? 1 : 0);
+        return Json{{"n0", a}, {"span", k}};
+      }});
+  r.add(Rule{
+      "cin2021.eq14",
+      "Cox-de Boor recursion N_{i,k}(u) with 0/0 := 0 on clamped knots (cin2021 Eq. 14)",
+      "pathref::bspline::basis_functions",
+      {{"knots", "number[]", "u_0 .. u_{m+p}"},
+       {"degree", "integer", "p"},
+       {"count", "integer", "m, the number of control points"},
+       {"u", "number", "in [u_p, u_m]"}},
+      {{"n", "number[]", "N_{0,p}(u) .. N_{m-1,p}(u)"}, {"span", "integer", "the knot span k"}},
+      [](const Json& in) {
+        const auto knots = arg_numbers(in, "knots");
+        const int p = degree_arg(in);
+        const std::size_t m = count_arg(in, "count");
+        const double u = arg_number(in, "u");
+        const auto n = bspline::basis_functions(knots, p, m, u);
+        Json a = Json::array();
+        for (double v : n) a.push_back(number(v));
+        return Json{{"n", a}, {"span", bspline::span_index(knots, p, m, u)}};
+      }});
+  r.add(Rule{
+      "cin2021.eq15",
+      "Clamped knot vector (end knots repeated k + 1 times; interior uniform or chord-length) (cin2021 Eq. 15)",
+      "pathref::bspline::make_curve",
+      clamped_inputs,
+      {{"degree", "integer", "the degree used (degree_for)"},
+       {"knots", "number[]", "u_0 .. u_{m+k}"},
+       {"domain", "number[]", "[u_k, u_m]"}},
+      [clamped_curve](const Json& in) {
+        const bspline::Curve c = clamped_curve(in);
+        Json knots = Json::array();
+        for (double u : c.knots) knots.push_back(number(u));
+        const auto d = bspline::domain(c);
+        return Json{{"degree", c.degree}, {"knots", knots}, {"domain", Json::array({number(d[0]), number(d[1])})}};
+      }});
+
   // ---- sensors2023 B-spline rules (the same functions serve cin2021's S-RRT) ----
   r.add(Rule{
       "sensors2023.eq6",

@@ -409,10 +409,143 @@ def rule_clearance(inp):
     return {"distance": _num(d), "lower": _num(lo), "upper": _num(up), "verdict": verdict, "segment": seg}
 
 
+# ---- curves.curvature ----------------------------------------------------------------------
+
+def _basis_table(knots, q, k, u):
+    """N_{i,q}(u) for every i (whole Cox-de Boor table) from N_{i,0} = [i == k], 0/0 := 0."""
+    size = len(knots) - 1
+    n = [1.0 if i == k else 0.0 for i in range(size)]
+    for r in range(1, q + 1):
+        nxt = []
+        for i in range(size - r):
+            dl = knots[i + r] - knots[i]
+            dr = knots[i + r + 1] - knots[i + 1]
+            a = 0.0 if dl == 0.0 else ((u - knots[i]) / dl) * n[i]
+            b = 0.0 if dr == 0.0 else ((knots[i + r + 1] - u) / dr) * n[i + 1]
+            nxt.append(a + b)
+        n = nxt
+    return n
+
+
+def derivatives(p, knots, ctrl, u):
+    check_curve(p, knots, ctrl)
+    m = len(ctrl)
+    k = span_index(knots, p, m, u)
+    pt = evaluate(p, knots, ctrl, u)
+    # Q_j = p (P_j - P_{j-1}) / (u_{j+p} - u_j), j = 1 .. m - 1 (0 where the denominator is 0)
+    q = {}
+    for j in range(1, m):
+        den = knots[j + p] - knots[j]
+        if den == 0.0:
+            q[j] = (0.0, 0.0)
+        else:
+            q[j] = ((float(p) * (ctrl[j][0] - ctrl[j - 1][0])) / den, (float(p) * (ctrl[j][1] - ctrl[j - 1][1])) / den)
+    n1 = _basis_table(knots, p - 1, k, u)
+    fx = fy = 0.0
+    for j in range(1, m):
+        fx = fx + n1[j] * q[j][0]
+        fy = fy + n1[j] * q[j][1]
+    sx = sy = 0.0
+    if p >= 2:
+        n2 = _basis_table(knots, p - 2, k, u)
+        for j in range(2, m):
+            den = knots[j + p - 1] - knots[j]
+            if den == 0.0:
+                continue
+            rx = (float(p - 1) * (q[j][0] - q[j - 1][0])) / den
+            ry = (float(p - 1) * (q[j][1] - q[j - 1][1])) / den
+            sx = sx + n2[j] * rx
+            sy = sy + n2[j] * ry
+    return pt, (fx, fy), (sx, sy)
+
+
+def curvature(p, knots, ctrl, u):
+    _, d1, d2 = derivatives(p, knots, ctrl, u)
+    s2 = d1[0] * d1[0] + d1[1] * d1[1]
+    if s2 == 0.0:
+        return math.inf
+    return (d1[0] * d2[1] - d1[1] * d2[0]) / (s2 * math.sqrt(s2))
+
+
+def rule_curvature(inp):
+    p, knots, ctrl = _curve(inp)
+    u = float(inp["u"])
+    pt, d1, d2 = derivatives(p, knots, ctrl, u)
+    return {"point": list(pt), "first": list(d1), "second": list(d2),
+            "curvature": _num(curvature(p, knots, ctrl, u))}
+
+
+# ---- cin2021 Eq. 12-15 (spec/cin2021-srrt.md): clamped curves over S-RRT's nodes --------------
+
+def clamped_chord_knots(ctrl, p):
+    m = len(ctrl)
+    _check_count(m, p)
+    require(all(_finite(q) for q in ctrl), "finite")
+    t = [0.0] * m
+    for i in range(1, m):
+        dx = ctrl[i][0] - ctrl[i - 1][0]
+        dy = ctrl[i][1] - ctrl[i - 1][1]
+        t[i] = t[i - 1] + math.sqrt(dx * dx + dy * dy)
+    total = t[m - 1]
+    u = clamped_knots(m, p)
+    if not total > 0.0:
+        return u
+    top = float(m - p)
+    den = float(p) * total
+    for j in range(1, m - p):
+        s = 0.0
+        for i in range(j, j + p):
+            s = s + t[i]
+        u[p + j] = min(top, (top * s) / den)
+    return u
+
+
+def clamped_curve(points, degree, spacing):
+    if spacing not in ("uniform", "chord"):
+        raise UsageError("knots must be uniform or chord")
+    p = degree_for(len(points), degree, "clamped")
+    ctrl = control_polygon(points, p, "clamped")
+    knots = clamped_knots(len(ctrl), p) if spacing == "uniform" else clamped_chord_knots(ctrl, p)
+    return p, knots, ctrl
+
+
+def _clamped(inp):
+    return clamped_curve(_pts(inp, "points"), _degree(inp), inp.get("knots", "uniform"))
+
+
+def rule_eq12(inp):
+    p, knots, ctrl = _clamped(inp)
+    return {"point": list(evaluate(p, knots, ctrl, float(inp["u"]))), "degree": p}
+
+
+def rule_eq13(inp):
+    p = _degree(inp)
+    m = inp["count"]
+    knots = [float(u) for u in inp["knots"]]
+    _check_count(m, p)
+    require(len(knots) == m + p + 1, "knot count")
+    require(all(math.isfinite(u) for u in knots), "finite knots")
+    require(all(knots[j - 1] <= knots[j] for j in range(1, len(knots))), "non-decreasing")
+    require(knots[p] < knots[m], "empty domain")
+    k = span_index(knots, p, m, float(inp["u"]))
+    return {"n0": [1 if i == k else 0 for i in range(len(knots) - 1)], "span": k}
+
+
+def rule_eq15(inp):
+    p, knots, ctrl = _clamped(inp)
+    check_curve(p, knots, ctrl)
+    return {"degree": p, "knots": knots, "domain": [knots[p], knots[len(ctrl)]]}
+
+
 RULES = {
     "curves.knots": rule_knots,
     "curves.sample": rule_sample,
     "curves.clearance": rule_clearance,
+    "curves.curvature": rule_curvature,
+    "cin2021.eq12": rule_eq12,
+    "cin2021.eq13": rule_eq13,
+    "cin2021.eq14": rule_eq7,
+    "cin2021.eq15": rule_eq15,
     "sensors2023.eq6": rule_eq6,
     "sensors2023.eq7": rule_eq7,
     "sensors2023.eq8": rule_eq8,
