@@ -189,6 +189,7 @@ int run_continuous_plan(const ContinuousPlanArgs& o) {
   const Json defaults = continuous::continuous_defaults(o.algo);
   const Json merged = planners::merge_params(defaults, o.overrides);
   (void)continuous::rrt_params(merged);  // option names checked before the map is read
+  if (o.algo == "s-rrt") (void)continuous::curve_params(merged);
   const ContinuousMap cm = load_continuous_map(o);
   const Vec2 start = endpoint(o.start, o.start_xy, cm.start, cm, "start");
   const Vec2 goal = endpoint(o.goal, o.goal_xy, cm.goal, cm, "goal");
