@@ -142,10 +142,12 @@ void check_curve(const Curve& c);
 /// N_{i,0} from span_index, then for q = 1 .. p
 /// N_{i,q} = ((u - u_i) / (u_{i+q} - u_i)) N_{i,q-1} + ((u_{i+q+1} - u) / (u_{i+q+1} - u_{i+1}))
 /// N_{i+1,q-1}, each quotient with 0/0 := 0 (a zero denominator makes its term 0), the two terms
-/// added left to right. Source: Sensors 2023 Eq. (7); Cox (1972); de Boor (1972).
-/// Spec: sensors2023.eq7. Pre: knots valid for (m, p) as in check_curve; u in [u_p, u_m]
-/// (DomainError). Post: values in [0, 1], at most p + 1 non-zero, sum 1 up to rounding.
-/// Golden: golden/sensors2023/sensors2023.eq7.json
+/// added left to right. Source: Sensors 2023 Eq. (7); cin2021 Eq. (13)-(14); Cox (1972);
+/// de Boor (1972).
+/// Spec: sensors2023.eq7, cin2021.eq14 (with cin2021.eq13 as N_{i,0}). Pre: knots valid for
+/// (m, p) as in check_curve; u in [u_p, u_m] (DomainError). Post: values in [0, 1], at most
+/// p + 1 non-zero, sum 1 up to rounding.
+/// Golden: golden/sensors2023/sensors2023.eq7.json, golden/cin2021-srrt/cin2021.eq14.json
 [[nodiscard]] std::vector<double> basis_functions(const std::vector<double>& knots, int degree,
                                                   std::size_t control_count, double u);
 
