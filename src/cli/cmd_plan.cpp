@@ -229,7 +229,13 @@ void print_report(const io::PlanRecord& rec, const grid::Grid& g, const Json& j,
     fmt::print("  converged   {}\n", conv.is_null() ? std::string("(no solution)")
                                                     : "at iteration " + conv.dump());
   }
-  if (!r.extra.empty()) fmt::print("  extra       {}\n", r.extra.dump());
+  if (!r.extra.empty()) {
+    // Long sample lists (a sampled curve) are in the JSON; the report names their size.
+    Json shown = r.extra;
+    if (shown.contains("curve") && shown["curve"].contains("points"))
+      shown["curve"]["points"] = fmt::format("({} points: see --json)", shown["curve"]["points"].size());
+    fmt::print("  extra       {}\n", shown.dump());
+  }
   if (r.found) fmt::print("  path        {}\n", cells_text(r.path));
 }
 
@@ -241,7 +247,30 @@ std::string plan_svg(const io::PlanRecord& rec, const grid::Grid& g, const Json&
       r.found ? fmt::format("{} (length {:.2f}, {} turns)", rec.algo, r.length,
                             j.at("turns").get<std::int64_t>())
               : rec.algo;
-  const std::vector<io::PathLayer> layers{{label, r.found ? r.path : std::vector<grid::Cell>{}}};
+  std::vector<io::PathLayer> layers{{label, r.found ? r.path : std::vector<grid::Cell>{}}};
+  // Planners with key nodes and a smoothed curve (astar-kinematic, spec/sensors2023.md): draw
+  // the key-node polyline with its nodes marked and the sampled curve.
+  if (r.found && r.extra.contains("key_nodes")) {
+    io::PathLayer keys{fmt::format("key nodes ({}, {} turns)", r.extra.at("key_nodes").size(),
+                                   r.extra.at("turns_key").get<std::int64_t>()),
+                       {}};
+    for (const auto& c : r.extra.at("key_nodes"))
+      keys.path.push_back(grid::Cell{c.at(0).get<std::int64_t>(), c.at(1).get<std::int64_t>()});
+    keys.markers = true;
+    keys.dashed = true;
+    layers.push_back(std::move(keys));
+  }
+  if (r.found && r.extra.contains("curve")) {
+    const Json& c = r.extra.at("curve");
+    io::PathLayer curve{fmt::format("B-spline p={} ({}, length {:.2f}, clearance {})",
+                                    c.at("degree").get<int>(), c.at("end").get<std::string>(),
+                                    c.at("length").get<double>(),
+                                    c.at("clearance").at("verdict").get<std::string>()),
+                        {}};
+    for (const auto& q : c.at("points"))
+      curve.points.push_back(geometry::Vec2{q.at(0).get<double>(), q.at(1).get<double>()});
+    layers.push_back(std::move(curve));
+  }
   const std::string title = fmt::format("{} {}x{}: {}, policy {}, seed {}", rec.map.name, g.width(),
                                         g.height(), rec.algo, grid::to_string(rec.policy), rec.seed);
   if (r.best_per_iteration.empty()) return io::svg_map(g, rec.start, rec.goal, layers, title);

@@ -142,6 +142,35 @@ Json metrics_json(const continuous::PathMetrics& m) {
   return Json{{"length", m.length}, {"nodes", m.nodes}, {"clearance", number_or_null(m.clearance)}};
 }
 
+Json numbers_json(const std::vector<double>& v) {
+  Json a = Json::array();
+  for (const double x : v) a.push_back(x);
+  return a;
+}
+
+/// The smoothed curve of s-rrt (spec/cli.md#plan-continuous, spec/cin2021-srrt.md
+/// r[cin2021.srrt.curve]).
+Json curve_json(const continuous::CurveResult& c, double inflation, double ms) {
+  return Json{{"degree", c.degree},
+              {"end", "clamped"},
+              {"knots", numbers_json(c.curve.knots)},
+              {"control", points_json(c.curve.control)},
+              {"kept", c.kept},
+              {"samples", points_json(c.samples.points)},
+              {"params", numbers_json(c.samples.params)},
+              {"chord", c.samples.chord},
+              {"length", c.length},
+              {"max_curvature", number_or_null(c.max_curvature)},
+              {"clearance", Json{{"distance", number_or_null(c.clearance.distance)},
+                                 {"lower", number_or_null(c.clearance.lower)},
+                                 {"upper", number_or_null(c.clearance.upper)},
+                                 {"inflation", inflation},
+                                 {"verdict", std::string(geometry::to_string(c.clearance.verdict))}}},
+              {"repair", c.repair},
+              {"inserted", c.inserted},
+              {"time_ms", ms}};
+}
+
 std::string fmt_pt(Vec2 p) { return fmt::format("({}, {})", p.x, p.y); }
 
 void write_text(const std::string& path, const std::string& text) {
@@ -160,6 +189,7 @@ int run_continuous_plan(const ContinuousPlanArgs& o) {
   const Json defaults = continuous::continuous_defaults(o.algo);
   const Json merged = planners::merge_params(defaults, o.overrides);
   (void)continuous::rrt_params(merged);  // option names checked before the map is read
+  if (o.algo == "s-rrt") (void)continuous::curve_params(merged);
   const ContinuousMap cm = load_continuous_map(o);
   const Vec2 start = endpoint(o.start, o.start_xy, cm.start, cm, "start");
   const Vec2 goal = endpoint(o.goal, o.goal_xy, cm.goal, cm, "goal");
@@ -197,6 +227,7 @@ int run_continuous_plan(const ContinuousPlanArgs& o) {
     j["shortcut_path"] = points_json(run.shortcut_path);
     j["shortcut_kept"] = run.kept;
     j["shortcut"] = run.tree.found && !run.shortcut_path.empty() ? metrics_json(run.shortcut_metrics) : Json(nullptr);
+    j["curve"] = run.curve ? curve_json(*run.curve, om.inflation(), run.curve_ms) : Json(nullptr);
   }
   const std::string title = fmt::format("{}: {}, seed {}", cm.map_json.value("name", std::string()), o.algo, seed);
   if (!o.json_out.empty()) write_text(o.json_out, j.dump(2) + "\n");
@@ -226,6 +257,15 @@ int run_continuous_plan(const ContinuousPlanArgs& o) {
       if (!run.shortcut_path.empty())
         fmt::print("  shortcut    length {}, {} nodes, clearance {}\n", run.shortcut_metrics.length,
                    run.shortcut_metrics.nodes, run.shortcut_metrics.clearance);
+      if (run.curve) {
+        const auto& c = *run.curve;
+        fmt::print("  curve       degree {}, {} control points, {} samples (chord <= {:.4g}), length {}\n", c.degree,
+                   c.curve.control.size(), c.samples.points.size(), c.samples.chord, c.length);
+        fmt::print("              clearance in [{}, {}] (r = {}): {}, max curvature {}\n", c.clearance.lower,
+                   c.clearance.upper, om.inflation(), geometry::to_string(c.clearance.verdict), c.max_curvature);
+        fmt::print("              repair {}{}\n", c.repair,
+                   c.inserted.empty() ? std::string() : fmt::format(" ({} node(s) re-inserted)", c.inserted.size()));
+      }
     }
     fmt::print("  time        {:.3f} ms\n", run.time_ms);
     if (!o.json_out.empty()) fmt::print("wrote {}\n", o.json_out);

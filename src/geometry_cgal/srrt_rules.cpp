@@ -9,6 +9,7 @@
 #include "pathref/continuous/rrt.hpp"
 #include "pathref/continuous/srrt.hpp"
 #include "pathref/core/error.hpp"
+#include "pathref/geometry/clearance.hpp"
 #include "pathref/geometry/obstacles.hpp"
 #include "pathref/geometry/scene.hpp"
 #include "pathref/rng/mt19937.hpp"
@@ -199,6 +200,88 @@ void register_srrt_rules(rules::Registry& r) {
                     {"nodes", pm.nodes},
                     {"clearance", rules::number(pm.clearance)},
                     {"turning", pm.turning}};
+      }});
+  r.add(rules::Rule{
+      "curves.polygon-clearance",
+      "Distance of a polyline (or sampled curve) to a scene's closed polygons and world border; bounds and verdict",
+      "pathref::geometry::clearance",
+      with(scene_fields,
+           {{"points", "number[2][]", "the polyline [[x, y], ...]"},
+            {"inflation", "number", "r >= 0 for the verdict (default 0; independent of the scene's radius)"},
+            {"tolerance", "number", "tau >= 0: vertices are curve samples within tau (default 0)"},
+            {"border", "bool", "the outside of the world rectangle is an obstacle (default true)"}}),
+      {{"distance", "number", "distance of the polyline ('inf' without obstacles)"},
+       {"lower", "number", "lower bound of the path's clearance"},
+       {"upper", "number", "upper bound"},
+       {"verdict", "string", "clear | enters | undetermined"},
+       {"segment", "integer", "first segment attaining the distance (-1 if inf)"}},
+      [](const Json& in) {
+        const ObstacleMap m = obstacles_of(in);
+        ClearanceOptions o;
+        if (in.contains("inflation")) o.inflation = rules::arg_number(in, "inflation");
+        if (in.contains("tolerance")) o.tolerance = rules::arg_number(in, "tolerance");
+        if (in.contains("border")) {
+          if (!in.at("border").is_boolean()) throw UsageError("input 'border' must be a bool");
+          o.border = in.at("border").get<bool>();
+        }
+        const auto c = clearance(m, points_arg(in, "points"), o);
+        return Json{{"distance", rules::number(c.distance)},
+                    {"lower", rules::number(c.lower)},
+                    {"upper", rules::number(c.upper)},
+                    {"verdict", std::string(to_string(c.verdict))},
+                    {"segment", c.segment}};
+      }});
+  r.add(rules::Rule{
+      "cin2021.srrt.curve",
+      "S-RRT's clamped B-spline over the kept nodes: samples, clearance against r, curvature, optional repair",
+      "pathref::continuous::smooth_path",
+      with(scene_fields,
+           {{"raw", "number[2][]", "the raw path p_0 ... p_n (Algorithm 1's branch)"},
+            {"kept", "integer[]", "indices kept by Algorithm 2 (0 first, n last)"},
+            {"degree", "integer", "requested degree (default 3)"},
+            {"knots", "string", "uniform (default) | chord"},
+            {"spacing", "number", "sample spacing > 0 (default 0.05)"},
+            {"repair", "bool", "re-insert and re-smooth (default false)"}}),
+      {{"degree", "integer", "degree used"},
+       {"kept", "integer[]", "control points as raw indices (after repair)"},
+       {"inserted", "integer[]", "raw indices re-inserted, in order"},
+       {"samples", "integer", "number of samples"},
+       {"chord", "number", "the sampler's chord bound"},
+       {"length", "number", "polyline length of the samples"},
+       {"max_curvature", "number", "max |curvature| at the samples ('inf' where no tangent)"},
+       {"lower", "number", "clearance lower bound"},
+       {"upper", "number", "clearance upper bound"},
+       {"verdict", "string", "clear | enters | undetermined (against the scene's r)"},
+       {"repair", "string", "off | clear | stuck"}},
+      [](const Json& in) {
+        const ObstacleMap m = obstacles_of(in);
+        Json params = Json::object();
+        if (in.contains("degree")) params["degree"] = in.at("degree");
+        if (in.contains("knots")) params["knots"] = in.at("knots");
+        if (in.contains("spacing")) params["spacing"] = in.at("spacing");
+        if (in.contains("repair")) params["repair"] = in.at("repair");
+        const auto cp = continuous::curve_params(params);
+        const Json& kj = rules::arg(in, "kept");
+        if (!kj.is_array()) throw UsageError("input 'kept' must be an array of indices");
+        std::vector<std::size_t> kept;
+        for (const Json& v : kj) {
+          if (!v.is_number_integer() || v.get<std::int64_t>() < 0) throw UsageError("input 'kept' must hold indices >= 0");
+          kept.push_back(v.get<std::size_t>());
+        }
+        const auto raw = points_arg(in, "raw");
+        require(kept.empty() || kept.back() < raw.size(), "kept: index out of range");
+        const auto c = continuous::smooth_path(m, raw, kept, cp);
+        return Json{{"degree", c.degree},
+                    {"kept", c.kept},
+                    {"inserted", c.inserted},
+                    {"samples", c.samples.points.size()},
+                    {"chord", rules::number(c.samples.chord)},
+                    {"length", rules::number(c.length)},
+                    {"max_curvature", rules::number(c.max_curvature)},
+                    {"lower", rules::number(c.clearance.lower)},
+                    {"upper", rules::number(c.clearance.upper)},
+                    {"verdict", std::string(to_string(c.clearance.verdict))},
+                    {"repair", c.repair}};
       }});
 }
 

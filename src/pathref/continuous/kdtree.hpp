@@ -10,14 +10,12 @@
 #include <span>
 #include <vector>
 
+#include "pathref/geometry/vec2.hpp"
+
 namespace pathref::continuous {
 
-/// A point of the plane (world units, y up).
-struct Vec2 {
-  double x = 0.0;
-  double y = 0.0;
-  friend bool operator==(const Vec2&, const Vec2&) = default;
-};
+/// A point of the plane (world units, y up): the project-wide plane point (geometry/vec2.hpp).
+using Vec2 = geometry::Vec2;
 
 /// Squared Euclidean distance (b.x - a.x)^2 + (b.y - a.y)^2 in binary64, in that order of
 /// operations: dx = b.x - a.x, dy = b.y - a.y, dx*dx + dy*dy. Spec: cin2021.srrt.nearest.

@@ -35,6 +35,9 @@ class CollisionChecker {
   /// Distance from the closed segment to the nearest obstacle (without the inflation r; +inf
   /// without obstacles), for reports. Spec: cin2021.srrt.metrics.
   [[nodiscard]] virtual double segment_clearance(Vec2 a, Vec2 b) const = 0;
+  /// The inflation radius r (robot radius + margin) rounded to a double: a point within r of an
+  /// obstacle is not free. For reports and the smoothed curve's verdict (spec cin2021.srrt.curve).
+  [[nodiscard]] virtual double inflation() const = 0;
 };
 
 /// Steer(x_near, x_target, delta): the point delta away from x_near towards x_target.

@@ -5,12 +5,16 @@
 /// Table 2. Parameters by name (the CLI's --set), defaults, and one run.
 /// Spec: spec/cin2021-srrt.md (Planners), spec/cli.md#plan-continuous
 #include <cstdint>
+#include <optional>
+#include <string>
 #include <string_view>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
 #include "pathref/continuous/rrt.hpp"
+#include "pathref/equations/bspline.hpp"
+#include "pathref/geometry/clearance.hpp"
 
 namespace pathref::continuous {
 
@@ -42,6 +46,47 @@ struct PathMetrics {
 /// Metrics of a polyline (>= 1 point). Spec: cin2021.srrt.metrics.
 [[nodiscard]] PathMetrics path_metrics(const CollisionChecker& map, const std::vector<Vec2>& points);
 
+/// Parameters of S-RRT's curve (Eq. 12-15) and of its check and repair (spec
+/// r[cin2021.srrt.curve]; `pathref plan --algo s-rrt --set name=value`).
+struct CurveParams {
+  int degree = 3;                                         ///< `degree`: requested degree k (1..20)
+  bspline::KnotSpacing knots = bspline::KnotSpacing::uniform;  ///< `knots`: uniform | chord
+  double spacing = 0.05;                                  ///< `spacing`: sample spacing (world units, > 0)
+  bool repair = false;                                    ///< `repair`: re-insert and re-smooth (off: the paper)
+};
+
+/// The smoothed curve of S-RRT and what pathref checks of it.
+struct CurveResult {
+  int degree = 0;                        ///< degree used (degree_for: lowered for few points)
+  bspline::Curve curve;                  ///< clamped B-spline over raw[kept]
+  bspline::Samples samples;              ///< curves.sample at `spacing`
+  std::vector<std::size_t> kept;         ///< control points: indices into the raw path (after repair)
+  std::vector<std::size_t> inserted;     ///< raw indices re-inserted by the repair, in order
+  geometry::Clearance clearance;         ///< curves.polygon-clearance of the samples, tau = chord / 2, r = inflation
+  double length = 0.0;                   ///< polyline_length of the samples (<= the arc length)
+  double max_curvature = 0.0;            ///< max |curves.curvature| over the sample parameters
+  std::string repair = "off";            ///< off | clear (the final curve is clear) | stuck (no node left to re-insert)
+};
+
+/// Parses the curve parameters `degree`, `knots`, `spacing`, `repair` of a merged parameter
+/// object (UsageError for a bad name or type, DomainError for a value out of range).
+[[nodiscard]] CurveParams curve_params(const Json& merged);
+
+/// The clamped B-spline (Eq. 12-15) over raw[kept] and its check (spec r[cin2021.srrt.curve]):
+/// degree = degree_for(|kept|, params.degree, clamped); knots by params.knots; samples at
+/// params.spacing; clearance against `map` with inflation map.inflation(), tolerance chord / 2,
+/// border off (the curve lies in the convex hull of its control points, inside the world
+/// rectangle); max |curvature| at the sample parameters. With params.repair, while the verdict
+/// is not `clear`: u = the parameter of the first sample of the segment attaining the distance,
+/// k = span_index(u); among the raw indices i with kept[k - degree] < i < kept[k] that are not
+/// kept, re-insert the one whose point is nearest to that sample (squared distance, the smallest
+/// index on ties) and rebuild; none left: repair = stuck. Source: Cin et al. 2021 Eq. 12-15
+/// (curve); pathref (check, repair). Spec: cin2021.srrt.curve.
+/// Pre: raw has >= 2 points; kept strictly increasing, kept.front() = 0, kept.back() = |raw| - 1
+/// (DomainError). Golden: golden/cin2021-srrt/cin2021.srrt.curve.json
+[[nodiscard]] CurveResult smooth_path(const CollisionChecker& map, const std::vector<Vec2>& raw,
+                                      const std::vector<std::size_t>& kept, const CurveParams& params);
+
 /// One run of `rrt` or `s-rrt`.
 struct ContinuousRun {
   RrtResult tree;
@@ -50,7 +95,9 @@ struct ContinuousRun {
   std::vector<Vec2> shortcut_path;       ///< s-rrt: raw[kept]
   PathMetrics raw_metrics;
   PathMetrics shortcut_metrics;          ///< s-rrt only
-  double time_ms = 0.0;                  ///< wall clock of the whole run (not reproducible)
+  std::optional<CurveResult> curve;      ///< s-rrt with smooth=true and a path: Eq. 12-15
+  double time_ms = 0.0;                  ///< wall clock of Algorithms 1 and 2 (not reproducible)
+  double curve_ms = 0.0;                 ///< wall clock of the curve, its check and repair
   Json params_used = Json::object();
 };
 

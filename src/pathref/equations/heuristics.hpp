@@ -44,8 +44,9 @@ inline constexpr std::int64_t coordinate_limit = std::int64_t{1} << 30;
 
 /// Euclidean distance sqrt(double(dx^2 + dy^2)); dx^2 + dy^2 in exact 64-bit integer arithmetic,
 /// converted to double by round-to-nearest, then the correctly rounded IEEE square root.
-/// Source: pathref (straight-line distance between cell centres).
-/// Spec: search.h.euclidean
+/// Source: pathref (straight-line distance between cell centres); Sensors 2023 Eq. (2),
+/// doi:10.3390/s23084102 (the same function serves both rules).
+/// Spec: search.h.euclidean, sensors2023.eq2
 /// Pre: |x|, |y| < 2^30 for both cells (DomainError).
 /// Post: >= 0; 0 iff n == g; correctly rounded whenever dx^2 + dy^2 < 2^53.
 /// Golden: golden/search/search.h.euclidean.json

@@ -17,7 +17,7 @@
 
 namespace pathref::geometry {
 
-using continuous::Vec2;
+// Vec2 is geometry::Vec2 (geometry/vec2.hpp); continuous::Vec2 is the same type.
 
 /// Obstacle polygons (exact vertices) with an exact inflation radius r, in a world rectangle.
 /// Immutable; copies share the prepared geometry.
@@ -56,6 +56,8 @@ class ObstacleMap final : public continuous::CollisionChecker {
   [[nodiscard]] const std::vector<std::vector<Vec2>>& polygons() const;
   /// r rounded to a double (reports only).
   [[nodiscard]] double radius() const;
+  /// radius() (the CollisionChecker interface). Spec: cin2021.srrt.curve.
+  [[nodiscard]] double inflation() const override { return radius(); }
 
   struct Impl;
 

@@ -94,16 +94,20 @@ Panel map_panel(const grid::Grid& g, std::optional<grid::Cell> start,
                 const std::string& title) {
   require(!start || g.in_bounds(*start), "svg_map: start outside the grid");
   require(!goal || g.in_bounds(*goal), "svg_map: goal outside the grid");
-  for (const auto& layer : paths)
+  for (const auto& layer : paths) {
     for (const auto& c : layer.path)
       require(g.in_bounds(c), "svg_map: path cell outside the grid in '" + layer.label + "'");
+    for (const auto& q : layer.points)
+      require(std::isfinite(q.x) && std::isfinite(q.y),
+              "svg_map: non-finite point in '" + layer.label + "'");
+  }
 
   const double s = cell_px(g);
   const double gw = static_cast<double>(g.width()) * s;
   const double gh = static_cast<double>(g.height()) * s;
   std::size_t longest = 8;  // "obstacle"
   for (const auto& layer : paths)  // the legend text, " (no path)" appended for an empty path
-    longest = std::max(longest, layer.label.size() + (layer.path.empty() ? 10 : 0));
+    longest = std::max(longest, layer.label.size() + (layer.path.empty() && layer.points.empty() ? 10 : 0));
   Panel p;
   p.width = kMapMargin + gw + kMapMargin + std::max(kMapLegendMinW, 40.0 + kCharW * static_cast<double>(longest));
   p.height = std::max(kMapTitleH + gh + kMapMargin, kMapTitleH + 30.0 + 22.0 * static_cast<double>(paths.size() + 3));
@@ -146,16 +150,27 @@ Panel map_panel(const grid::Grid& g, std::optional<grid::Cell> start,
   }
   const double stroke_w = std::clamp(s / 8.0, 1.0, 4.0);
   for (std::size_t i = 0; i < paths.size(); ++i) {
-    if (paths[i].path.empty()) continue;
+    if (paths[i].path.empty() && paths[i].points.empty()) continue;
+    std::vector<std::pair<double, double>> vertices;
+    for (const auto& c : paths[i].path) vertices.push_back(cell_centre_px(g, c, s));
+    for (const auto& q : paths[i].points)  // map point -> px: y up, clamped to the drawing
+      vertices.emplace_back(kMapMargin + std::clamp(q.x, -1.0, static_cast<double>(g.width()) + 1.0) * s,
+                            kMapTitleH + (static_cast<double>(g.height()) -
+                                          std::clamp(q.y, -1.0, static_cast<double>(g.height()) + 1.0)) * s);
     std::string pts;
-    for (const auto& c : paths[i].path) {
-      const auto [cx, cy] = cell_centre_px(g, c, s);
+    for (const auto& [cx, cy] : vertices) {
       if (!pts.empty()) pts += ' ';
       pts += fmt::format("{},{}", num(cx), num(cy));
     }
+    const double w = paths[i].markers ? stroke_w * 0.6 : stroke_w;
     b += fmt::format("<polyline class=\"path\" data-label=\"{}\" points=\"{}\" fill=\"none\" stroke=\"{}\" "
-                     "stroke-width=\"{}\" stroke-linejoin=\"round\" stroke-linecap=\"round\"/>\n",
-                     xml_escape(paths[i].label), pts, colour(i), num(stroke_w));
+                     "stroke-width=\"{}\" stroke-linejoin=\"round\" stroke-linecap=\"round\"{}/>\n",
+                     xml_escape(paths[i].label), pts, colour(i), num(w),
+                     paths[i].dashed ? fmt::format(" stroke-dasharray=\"{} {}\"", num(2.5 * w), num(2.0 * w)) : "");
+    if (paths[i].markers)
+      for (const auto& [cx, cy] : vertices)
+        b += fmt::format("<circle class=\"marker\" cx=\"{}\" cy=\"{}\" r=\"{}\" fill=\"{}\" stroke=\"black\" "
+                         "stroke-width=\"0.5\"/>\n", num(cx), num(cy), num(std::max(2.0, s * 0.16)), colour(i));
   }
   if (start) b += endpoint_marker(g, *start, s, "start", "#2ca02c", "S");
   if (goal) b += endpoint_marker(g, *goal, s, "goal", "#d62728", "T");
@@ -164,7 +179,9 @@ Panel map_panel(const grid::Grid& g, std::optional<grid::Cell> start,
   double ly = kMapTitleH + 12.0;
   b += "<g class=\"legend\">\n";
   for (std::size_t i = 0; i < paths.size(); ++i, ly += 22.0)
-    b += legend_line(lx, ly, colour(i), paths[i].path.empty() ? paths[i].label + " (no path)" : paths[i].label);
+    b += legend_line(lx, ly, colour(i),
+                     paths[i].path.empty() && paths[i].points.empty() ? paths[i].label + " (no path)"
+                                                                     : paths[i].label);
   b += fmt::format("<circle cx=\"{}\" cy=\"{}\" r=\"7\" fill=\"#2ca02c\" stroke=\"black\"/>"
                    "<text x=\"{}\" y=\"{}\" font-size=\"13\">start S</text>\n",
                    num(lx + 12.0), num(ly), num(lx + 30.0), num(ly + 4.5));

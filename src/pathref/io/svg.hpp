@@ -11,6 +11,7 @@
 #include <string_view>
 #include <vector>
 
+#include "pathref/geometry/vec2.hpp"
 #include "pathref/grid/grid.hpp"
 
 namespace pathref::io {
@@ -34,10 +35,16 @@ struct ChartOptions {
 /// An empty series list, or series without finite points, gives a chart with axes and legend only.
 [[nodiscard]] std::string svg_line_chart(const std::vector<Series>& series, const ChartOptions& opt);
 
-/// One path drawn on a map: a polyline through the centres of its cells, in the legend as `label`.
+/// One path drawn on a map: a polyline through the centres of its cells, in the legend as `label`;
+/// or, when `points` is non-empty, a polyline through those map points (continuous paths such as
+/// a sampled B-spline: map units, cell (x, y) = [x, x+1] x [y, y+1]). `markers` draws a dot on
+/// every vertex (key nodes); `dashed` a dashed line.
 struct PathLayer {
   std::string label;
   std::vector<grid::Cell> path;
+  std::vector<geometry::Vec2> points = {};
+  bool markers = false;
+  bool dashed = false;
 };
 
 /// The grid map: a white <rect class="map"> for the whole grid, one black <rect class="obstacle">

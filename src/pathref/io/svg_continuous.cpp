@@ -60,6 +60,7 @@ std::string svg_continuous(const ContinuousScene& om, const continuous::Continuo
   };
   polyline(run.raw, "raw-path", "#2a2", 2.0);
   polyline(run.shortcut_path, "shortcut-path", "#d22", 2.5);
+  if (run.curve) polyline(run.curve->samples.points, "curve", "#15c", 2.5);
   out += fmt::format("<circle class=\"start\" cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"6\" fill=\"green\"/>\n", X(start.x), Y(start.y));
   out += fmt::format("<circle class=\"goal\" cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"6\" fill=\"red\"/>\n", X(goal.x), Y(goal.y));
   // legend
@@ -76,6 +77,10 @@ std::string svg_continuous(const ContinuousScene& om, const continuous::Continuo
     entries.push_back({fmt::format("shortcut (length {:.2f}, {} nodes)", run.shortcut_metrics.length,
                                    run.shortcut_path.size()),
                        "#d22"});
+  if (run.curve)
+    entries.push_back({fmt::format("B-spline (degree {}, length {:.2f}, {})", run.curve->degree, run.curve->length,
+                                   geometry::to_string(run.curve->clearance.verdict)),
+                       "#15c"});
   entries.push_back({"start", "green"});
   entries.push_back({"goal", "red"});
   entries.push_back({"obstacle", "black"});

@@ -1,6 +1,7 @@
 #include "pathref/planners/registry_list.hpp"
 
 #include "pathref/planners/search.hpp"
+#include "pathref/planners/astar_kinematic.hpp"
 #include "pathref/planners/ant_colony.hpp"
 #include "pathref/planners/genetic.hpp"
 #include "pathref/planners/hybrid.hpp"
@@ -12,6 +13,8 @@ std::vector<Planner> all_planners() {
   // search planners (spec/search.md): added by the search module
   v.push_back(make_astar_planner());
   v.push_back(make_dijkstra_planner());
+  // kinematic-constraint A* (spec/sensors2023.md): the search core with an expansion rule
+  v.push_back(make_astar_kinematic_planner());
   // ant-colony planners (spec/shi2022-aco.md, spec/han-iaco.md): added by the ACO module
   v.push_back(make_aco_planner());
   v.push_back(make_aco_classic_planner());

@@ -9,6 +9,7 @@
 /// Chebyshev heuristic.
 /// Spec: spec/search.md (search.order, search.astar, search.dijkstra)
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -44,6 +45,13 @@ struct Outcome {
   std::vector<grid::Cell> path;   ///< start ... goal; empty when !found
   double length = 0.0;            ///< g(goal) = left-to-right sum of the step costs; 0 when !found
   std::int64_t expansions = 0;    ///< cells moved from OPEN to CLOSED, the goal included
+  /// Child generations: pairs (expanded cell, move) whose target is in bounds, free, not closed
+  /// and reachable by an allowed step (the g of the target is evaluated). spec/search.md
+  /// "Expansion rules and child counts".
+  std::int64_t generated = 0;
+  /// Child nodes: distinct cells put into OPEN for the first time (the start excluded) -- the
+  /// grey cells of Sensors 2023 Fig. 6 (spec/search.md "Expansion rules and child counts").
+  std::int64_t child_nodes = 0;
 };
 
 /// A* from start to goal under `policy` with heuristic `h` (spec rule search.astar).
@@ -57,6 +65,32 @@ struct Outcome {
 /// Golden: golden/search/search.astar.json
 [[nodiscard]] Outcome astar(const grid::Grid& g, grid::Cell start, grid::Cell goal,
                             grid::CornerPolicy policy, heuristics::Heuristic h);
+
+/// A node-expansion rule for the one best-first core (spec/search.md "Expansion rules and child
+/// counts"): which of the
+/// 8 moves an expanded cell generates, and the key of a generated child. astar() is this core
+/// with all 8 moves, h = heuristics::evaluate and f = g + h; planners such as sensors2023's
+/// kinematic A* plug their rule in here instead of writing a second A*.
+struct ExpansionRule {
+  /// Bit k (k = 0 .. 7, the moves in grid.neighbour-order: (-1,-1), (0,-1), (1,-1), (-1,0),
+  /// (1,0), (-1,1), (0,1), (1,1)) set = the move is generated from `cell`. Called once per
+  /// expansion. Empty = all 8.
+  std::function<std::uint8_t(grid::Cell cell)> moves;
+  /// h(n) of a generated child (the tie-break key). Required.
+  std::function<double(grid::Cell n)> h;
+  /// f(n) from g(n) and h(n). Empty = fl(g + h).
+  std::function<double(double g, double h, grid::Cell n)> f;
+};
+
+/// The best-first search of astar() under an expansion rule: the same open-list order
+/// (search.order on (f, h, index)), the same lazy deletion, no reopening, parents replaced only
+/// on a strictly smaller g; only the generated moves and the key differ.
+/// Source: Hart, Nilsson & Raphael (1968); Sensors 2023 §2.1–2.2, doi:10.3390/s23084102.
+/// Spec: search.astar (spec/search.md "Expansion rules and child counts")
+/// Pre: as astar; rule.h set (UsageError). Post: as astar when the rule generates all 8 moves
+/// and f = g + h with h = heuristics::evaluate(H) (identical path and counts).
+[[nodiscard]] Outcome best_first(const grid::Grid& g, grid::Cell start, grid::Cell goal,
+                                 grid::CornerPolicy policy, const ExpansionRule& rule);
 
 /// Dijkstra's algorithm: exactly astar(..., Heuristic::zero), key (g, 0, index).
 /// Source: Dijkstra (1959), doi:10.1007/BF01386390.

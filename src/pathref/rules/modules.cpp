@@ -39,6 +39,8 @@ void register_all_modules(Registry& r) {
   register_cin2021_ml_rules(r);
   register_stats_rules(r);
   register_sensors2023_dwa_rules(r);
+  register_curves_rules(r);
+  register_sensors2023_rules(r);
   extensions().sealed = true;
   for (const ModuleRegistration fn : extensions().fns) fn(r);
 }

@@ -19,6 +19,8 @@ void register_cin2021_rules(Registry& r);
 void register_cin2021_ml_rules(Registry& r);
 void register_stats_rules(Registry& r);
 void register_sensors2023_dwa_rules(Registry& r);
+void register_curves_rules(Registry& r);
+void register_sensors2023_rules(Registry& r);
 void register_all_modules(Registry& r);
 
 /// Modules of libraries layered on pathref that the core library cannot call (the inflation.*

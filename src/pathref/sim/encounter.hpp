@@ -14,17 +14,14 @@
 #include <vector>
 
 #include "pathref/equations/rls.hpp"
+#include "pathref/geometry/vec2.hpp"
 #include "pathref/grid/grid.hpp"
 
 namespace pathref::sim {
 
 /// A point or vector in metres (map frame: x right, y up; cell (x, y) has its centre at
 /// (x + 0.5, y + 0.5) with 1 m cells, rule grid.coord).
-struct Vec2 {
-  double x = 0.0;
-  double y = 0.0;
-  friend constexpr bool operator==(const Vec2&, const Vec2&) = default;
-};
+using Vec2 = geometry::Vec2;  // the project-wide plane point (geometry/vec2.hpp)
 
 /// Centre of a cell with 1 m cells: (x + 0.5, y + 0.5). Spec: han.sim.step (grid.coord).
 [[nodiscard]] Vec2 centre(grid::Cell c) noexcept;

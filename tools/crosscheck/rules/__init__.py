@@ -15,10 +15,12 @@ from . import cin2021_srrt
 from . import cin2021_ml
 from . import stats
 from . import sensors2023_dwa
+from . import curves
+from . import sensors2023
 
 RULES = {}
 for _module in (rng, search, grid, metrics, mecanum, shi2022, han, han_sim, inflation, ga_planners, aco_planners, cin2021,
-                cin2021_srrt, cin2021_ml, stats, sensors2023_dwa):
+                cin2021_srrt, cin2021_ml, stats, sensors2023_dwa, curves, sensors2023):
     for _id, _fn in _module.RULES.items():
         assert _id not in RULES, _id
         RULES[_id] = _fn

@@ -13,6 +13,7 @@ from fractions import Fraction
 from .common import DomainError, require
 from .inflation import in_polygon_closed, point_seg_d2, read_scene, segments_meet, validate
 from .rng import MT19937
+from . import curves
 
 
 class World:
@@ -266,6 +267,114 @@ def metrics(inp):
             "turning": turning}
 
 
+# ---- curves.polygon-clearance and cin2021.srrt.curve (spec/curves.md, spec/cin2021-srrt.md) ----
+
+def _border_rect(p, lo, hi):
+    return max(0.0, min(p[0] - lo[0], hi[0] - p[0], p[1] - lo[1], hi[1] - p[1]))
+
+
+def polygon_clearance(w, pts, inflation, tolerance, border):
+    """The exact distance of every segment to every polygon (Fractions), then the bounds and the
+    verdict as spec/curves.md r[curves.clearance] states them."""
+    require(len(pts) >= 1, "no points")
+    require(all(math.isfinite(q[0]) and math.isfinite(q[1]) for q in pts), "finite")
+    require(math.isfinite(inflation) and inflation >= 0.0, "inflation")
+    require(math.isfinite(tolerance) and tolerance >= 0.0, "tolerance")
+
+    def seg(a, b):
+        d = math.inf
+        if border:
+            d = min(_border_rect(a, w.lo, w.hi), _border_rect(b, w.lo, w.hi))
+        return min(d, w.clearance(a, b))
+
+    dist, index = math.inf, -1
+    pieces = 1 if len(pts) == 1 else len(pts) - 1
+    for s in range(pieces):
+        a = pts[s]
+        b = pts[s] if len(pts) == 1 else pts[s + 1]
+        d = seg(a, b)
+        if d < dist:
+            dist, index = d, s
+    if tolerance == 0.0:
+        lower = upper = dist
+    else:
+        lower = max(0.0, dist - tolerance)
+        upper = min(seg(q, q) for q in pts)
+    if upper <= inflation:
+        verdict = "enters"
+    elif lower > inflation:
+        verdict = "clear"
+    else:
+        verdict = "undetermined"
+    return dist, lower, upper, verdict, index
+
+
+def _num(x):
+    return ("inf" if x > 0 else "-inf") if isinstance(x, float) and math.isinf(x) else x
+
+
+def rule_polygon_clearance(inp):
+    w = World(inp)
+    pts = [pt(p) for p in inp["points"]]
+    border = inp.get("border", True)
+    require(isinstance(border, bool), "border must be a bool")
+    d, lo, up, verdict, s = polygon_clearance(w, pts, float(inp.get("inflation", 0.0)),
+                                              float(inp.get("tolerance", 0.0)), border)
+    return {"distance": _num(d), "lower": _num(lo), "upper": _num(up), "verdict": verdict, "segment": s}
+
+
+def _curve_once(w, raw, kept, degree, knots_mode, spacing):
+    p, knots, ctrl = curves.clamped_curve([raw[k] for k in kept], degree, knots_mode)
+    params, points, chord = curves.sample(p, knots, ctrl, spacing)
+    pts = [tuple(q) for q in points]
+    d, lo, up, verdict, s = polygon_clearance(w, pts, float(w.r), chord / 2.0, False)
+    kappa = 0.0
+    for u in params:
+        kappa = max(kappa, abs(curves.curvature(p, knots, ctrl, u)))
+    return {"p": p, "knots": knots, "ctrl": ctrl, "params": params, "points": pts, "chord": chord,
+            "lower": lo, "upper": up, "verdict": verdict, "segment": s, "kept": list(kept),
+            "length": length(pts), "kappa": kappa}
+
+
+def rule_curve(inp):
+    w = World(inp)
+    raw = [pt(p) for p in inp["raw"]]
+    kept = inp["kept"]
+    require(len(raw) >= 2, "raw path needs >= 2 points")
+    require(len(kept) >= 2 and kept[0] == 0 and kept[-1] == len(raw) - 1, "kept ends")
+    require(all(kept[i - 1] < kept[i] for i in range(1, len(kept))), "kept increasing")
+    degree = inp.get("degree", 3)
+    require(isinstance(degree, int) and 1 <= degree <= curves.MAX_DEGREE, "degree")
+    knots_mode = inp.get("knots", "uniform")
+    spacing = float(inp.get("spacing", 0.05))
+    require(math.isfinite(spacing) and spacing > 0.0, "spacing")
+    repair = inp.get("repair", False)
+    c = _curve_once(w, raw, kept, degree, knots_mode, spacing)
+    status, inserted = "off", []
+    if repair:
+        status = "clear"
+        while c["verdict"] != "clear":
+            u = c["params"][c["segment"]]
+            at = c["points"][c["segment"]]
+            k = curves.span_index(c["knots"], c["p"], len(c["ctrl"]), u)
+            lo, hi = c["kept"][k - c["p"]], c["kept"][k]
+            best = None
+            for i in range(lo + 1, hi):
+                if i in c["kept"]:
+                    continue
+                d = sqd(raw[i], at)
+                if best is None or d < best[0]:
+                    best = (d, i)
+            if best is None:
+                status = "stuck"
+                break
+            inserted.append(best[1])
+            c = _curve_once(w, raw, sorted(c["kept"] + [best[1]]), degree, knots_mode, spacing)
+    return {"degree": c["p"], "kept": c["kept"], "inserted": inserted, "samples": len(c["points"]),
+            "chord": c["chord"], "length": c["length"], "max_curvature": _num(c["kappa"]),
+            "lower": _num(c["lower"]), "upper": _num(c["upper"]), "verdict": c["verdict"], "repair": status}
+
+
 RULES = {
     "cin2021.srrt.collision": collision,
     "cin2021.srrt.nearest": nearest,
@@ -273,4 +382,6 @@ RULES = {
     "cin2021.alg1": alg1,
     "cin2021.alg2": alg2,
     "cin2021.srrt.metrics": metrics,
+    "curves.polygon-clearance": rule_polygon_clearance,
+    "cin2021.srrt.curve": rule_curve,
 }
