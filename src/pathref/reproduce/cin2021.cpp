@@ -234,6 +234,17 @@ Claim hga_less_claim(const std::string& id, const std::string& text, const std::
               (ci_below ? "below" : "above") + " 0 (skewed runs)";
     if (!clash.empty()) c.note += (c.note.empty() ? "" : "; ") + std::string("at ") + at + ": " + clash;
   };
+  // an iteration count of 1 means the colony never improved on its first iteration (stagnation)
+  if (std::string(a_key).rfind("optimum_iteration", 0) == 0)
+    for (const auto& [vals, name] : {std::pair{&a_n, a_name}, std::pair{&b_n, b_name}}) {
+      if (name.rfind(gan, 0) == 0) continue;  // the GA's count is a generation
+      std::size_t first = 0;
+      for (const double x : *vals) first += x <= 1.0 ? 1 : 0;
+      if (2 * first >= vals->size())
+        c.note += (c.note.empty() ? "" : "; ") +
+                  fmt::format("stagnation: {} of {}'s {} runs found their best path in iteration 1, so the count "
+                              "measures stagnation, not speed", first, name, vals->size());
+    }
   add_ci(a_n, b_n, c.ours, "n", c.verdict);
   if (more && c.verdict_2n) add_ci(a_2, b_2, c.ours_2n, "2n", *c.verdict_2n);
   return c;
@@ -403,6 +414,7 @@ Json run_cin2021(const CinConfig& cfg) {
           const std::string text = std::string(q.text) + " (against Shi's " + planner_label(other) + ", map " + sc.key + ")";
           Claim c = hga_less_claim(id, text, "neither paper (pathref's comparison of the two papers' hybrids)", series(hga),
                                    q.key, hga, series(other), q.key, other, q.decimals, jd);
+          c.paper = "— (neither paper; pathref's comparison)";
           if (std::string(q.key) == "optimum_iteration")
             c.note += std::string(c.note.empty() ? "" : "; ") +
                       "Shi's hybrids report the GA generation of their result, HGA-ACO the ACO iteration: different counts";
