@@ -332,8 +332,8 @@ int run_cin2021_cmd(const ReproduceOptions& o) {
   cfg.runs = o.runs.empty() ? (o.quick ? 3 : 20) : parse_int(o.runs, "--runs", 2, 10000);
   cfg.seed = static_cast<std::uint32_t>(parse_int(o.seed, "--seed", 0, 0xFFFFFFFFLL));
   cfg.policy = grid::parse_corner_policy(o.policy);
-  if (static_cast<std::uint64_t>(cfg.seed) + static_cast<std::uint64_t>(cfg.runs) - 1 > 4294967295ULL)
-    throw UsageError("--seed + --runs - 1 must not exceed 4294967295");
+  if (static_cast<std::uint64_t>(cfg.seed) + 2 * static_cast<std::uint64_t>(cfg.runs) - 1 > 4294967295ULL)
+    throw UsageError("--seed + 2 --runs - 1 must not exceed 4294967295 (2n runs are made, reproduce.judge)");
   if (!o.map_b.empty()) cfg.map_b = reproduce::ProtocolMap{o.map_b, load_grid(o.map_b)};
   if (!o.map_c.empty()) cfg.map_c = reproduce::ProtocolMap{o.map_c, load_grid(o.map_c)};
   std::string command = fmt::format("pathref reproduce cin2021-hga-aco --runs {} --seed {} --policy {}", cfg.runs,

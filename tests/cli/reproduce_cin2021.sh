@@ -31,7 +31,7 @@ if [ -f "$data/mapB_20x20_ga.txt" ] && [ -f "$data/mapC_20x20_winsleo_traditiona
 else
   echo "SKIP part: $data absent, maps B and C not run"
 fi
-"$pathref" reproduce cin2021-hga-aco --quick --runs 2 "${maps[@]}" --out-dir "$tmp/r" >"$tmp/out" 2>"$tmp/err"
+"$pathref" reproduce cin2021-hga-aco --quick --runs 2 --jobs 2 "${maps[@]}" --out-dir "$tmp/r" >"$tmp/out" 2>"$tmp/err"
 for f in cin2021-hga-aco.md cin2021-hga-aco/reproduce.json cin2021-hga-aco/s1-paths.svg cin2021-hga-aco/s3-convergence.svg; do
   [ -s "$tmp/r/$f" ] || { echo "FAIL: $f not written"; cat "$tmp/out" "$tmp/err"; exit 1; }
 done
@@ -44,11 +44,22 @@ assert keys == want, keys
 for k in keys:
     for p in ("hga-aco-cin", "aco-cin", "ga-cin"):
         r = d["results"][k][p]
-        assert r["available"] and r["summary"]["runs"] == 2, (k, p)
+        assert r["available"] and r["summary"]["runs"] == 4, (k, p)  # 2n runs
         assert r["summary"]["valid"] == r["summary"]["found"], (k, p)
-assert d["claims"], "no claims"
+assert d["protocol"]["runs"] == 2 and d["protocol"]["runs_2n"] == 4
+assert d["provenance"]["jobs"] == 2
+assert len(d["claims"]) == len(keys) * 4 * 2, len(d["claims"])
+alts = {c["id"] for c in d["reading_claims"]}
 for c in d["claims"]:
-    assert c["verdict"] in ("holds", "does not hold", "cannot be tested"), c
+    assert c["verdict"] in ("holds", "does not hold", "not significant", "cannot be tested"), c
+    assert c["id"] + "@any_stuck" in alts and c["id"] + "@goal_inverse" in alts, c["id"]
+    assert c["depends_on"], c["id"]
+    if c["verdict"] != "cannot be tested":
+        assert c["at_2n"] is not None and "Mann" in c["rule"], c
+assert len(d["cross_paper"]) == (16 if sys.argv[2] != "0" else 0), len(d["cross_paper"])
 PY
 grep -qF "project" "$tmp/r/cin2021-hga-aco.md" || { echo "FAIL: the report does not say the parameters are the project's"; exit 1; }
+for w in "QUICK RUN" "verdicts on the protocol's n runs" "under the alternative readings" "Verdicts that change between n and 2n"; do
+  grep -qF "$w" "$tmp/r/cin2021-hga-aco.md" || { echo "FAIL: the report lacks '$w'"; exit 1; }
+done
 echo "reproduce cin2021-hga-aco: ok"

@@ -212,6 +212,35 @@ std::optional<std::size_t> best_run(const std::vector<RunRecord>& runs) {
 
 namespace pathref::reproduce {
 
+std::vector<RunRecord> run_records(const planners::Planner& p, const std::string& name, const Json& requested,
+                                   const grid::Grid& g, grid::Cell start, grid::Cell goal, grid::CornerPolicy policy,
+                                   std::uint32_t seed, std::int64_t runs, const std::string& context) {
+  require(runs >= 1, "run_records: runs must be >= 1");
+  std::vector<RunRecord> records(static_cast<std::size_t>(runs));
+  const Execution& ex = current_execution();
+  const auto seed_of = [&](std::size_t i) { return static_cast<std::uint32_t>(seed + static_cast<std::uint64_t>(i)); };
+  if (ex.mode == Execution::Mode::run) {
+    parallel_for(records.size(), [&](std::size_t i) { records[i] = run_once(p, g, start, goal, policy, seed_of(i), requested); });
+    return records;
+  }
+  for (std::size_t i = 0; i < records.size(); ++i) {
+    if (ex.mode == Execution::Mode::emit) {
+      if (ex.emitted != nullptr) ex.emitted->push_back(job_json(context, name, requested, g, start, goal, policy, seed_of(i)));
+      records[i].seed = seed_of(i);
+      records[i].validation = "not_found";
+      records[i].params_used = requested;
+      continue;
+    }
+    const std::string key = job_key(context, name, requested, g, start, goal, policy, seed_of(i));
+    const auto it = ex.merged == nullptr ? decltype(ex.merged->end()){} : ex.merged->find(key);
+    if (ex.merged == nullptr || it == ex.merged->end())
+      throw UsageError(fmt::format("--merge: no result for the run '{}' in '{}' ({} results read)", key,
+                                   ex.merged_from, ex.merged == nullptr ? 0 : ex.merged->size()));
+    records[i] = record_from_json_full(it->second);
+  }
+  return records;
+}
+
 Json run_series(const std::string& name, const Json& params, const grid::Grid& g, grid::Cell start,
                 grid::Cell goal, grid::CornerPolicy policy, std::uint32_t seed, std::int64_t runs,
                 bool quick, const Progress& progress, const std::string& context,
@@ -230,29 +259,8 @@ Json run_series(const std::string& name, const Json& params, const grid::Grid& g
     const Json quick_params = quick_overrides(merged);
     for (auto it = quick_params.begin(); it != quick_params.end(); ++it) requested[it.key()] = it.value();
   }
-  std::vector<RunRecord> records(static_cast<std::size_t>(runs));
   const auto t0 = std::chrono::steady_clock::now();
-  const Execution& ex = current_execution();
-  const auto seed_of = [&](std::size_t i) { return static_cast<std::uint32_t>(seed + static_cast<std::uint64_t>(i)); };
-  if (ex.mode == Execution::Mode::run) {
-    parallel_for(records.size(), [&](std::size_t i) { records[i] = run_once(*p, g, start, goal, policy, seed_of(i), requested); });
-  } else {
-    for (std::size_t i = 0; i < records.size(); ++i) {
-      if (ex.mode == Execution::Mode::emit) {
-        if (ex.emitted != nullptr) ex.emitted->push_back(job_json(context, name, requested, g, start, goal, policy, seed_of(i)));
-        records[i].seed = seed_of(i);
-        records[i].validation = "not_found";
-        records[i].params_used = requested;
-        continue;
-      }
-      const std::string key = job_key(context, name, requested, g, start, goal, policy, seed_of(i));
-      const auto it = ex.merged == nullptr ? decltype(ex.merged->end()){} : ex.merged->find(key);
-      if (ex.merged == nullptr || it == ex.merged->end())
-        throw UsageError(fmt::format("--merge: no result for the run '{}' in '{}' ({} results read)", key,
-                                     ex.merged_from, ex.merged == nullptr ? 0 : ex.merged->size()));
-      records[i] = record_from_json_full(it->second);
-    }
-  }
+  std::vector<RunRecord> records = run_records(*p, name, requested, g, start, goal, policy, seed, runs, context);
   const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   Json out = Json::object();
   out["available"] = true;

@@ -139,6 +139,16 @@ void parallel_for(std::size_t n, const std::function<void(std::size_t)>& fn);
 /// seed; nullopt when no run found a path. Spec: reproduce.stats.
 [[nodiscard]] std::optional<std::size_t> best_run(const std::vector<RunRecord>& runs);
 
+/// The records of `runs` runs of planner `p` (registered as `name`) with the requested parameters,
+/// seeds seed, seed + 1, ..., in run order, executed as current_execution() says: `run` on its
+/// threads (run_once each), `emit` (placeholder records, one job_json per run appended),
+/// `merge` (each record read from the merged results by job_key; missing: UsageError).
+/// Spec: reproduce.execution. Pre: runs >= 1.
+[[nodiscard]] std::vector<RunRecord> run_records(const planners::Planner& p, const std::string& name,
+                                                 const Json& requested, const grid::Grid& g, grid::Cell start,
+                                                 grid::Cell goal, grid::CornerPolicy policy, std::uint32_t seed,
+                                                 std::int64_t runs, const std::string& context);
+
 /// The JSON of a planner's series of runs on one map (spec reproduce.json, "results"):
 /// {"available", "description", "requested" (the overrides: `params`, then the --quick ones of reproduce.quick computed on the
 /// defaults overlaid with `params`, which win),

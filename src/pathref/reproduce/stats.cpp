@@ -547,6 +547,14 @@ bool matches_printed(double value, std::string_view printed) {
   return fixed(value, printed_decimals(printed)) == printed;
 }
 
+Judgement judge_printed(double value, std::string_view printed, Sense sense) {
+  if (matches_printed(value, printed)) return Judgement{Verdict::holds, Direction::none};
+  const double paper = std::stod(std::string(printed));
+  const bool higher = value > paper;
+  const bool better = sense == Sense::higher_is_better ? higher : !higher;
+  return Judgement{Verdict::fails, better ? Direction::pathref_better : Direction::pathref_worse};
+}
+
 Verdict judge_about_percent(double ours, double claimed) {
   require(std::isfinite(ours) && std::isfinite(claimed), "judge_about_percent: values must be finite");
   return std::fabs(ours - claimed) <= about_percent_tolerance ? Verdict::holds : Verdict::fails;

@@ -298,6 +298,13 @@ struct ComparisonAssessment {
 /// Spec: reproduce.judge. Pre: as printed_decimals and fixed.
 [[nodiscard]] bool matches_printed(double value, std::string_view printed);
 
+/// The printed-digits rule for a value pathref computes exactly (no sampling noise): holds iff
+/// matches_printed(value, printed); otherwise fails, the direction pathref_better or pathref_worse
+/// by the sign of value - printed and `sense`. Used for pathref's checks of exact optima and for a
+/// deterministic computation on the paper's own data and folds (cin2021-ml's tenfold numbers).
+/// Spec: reproduce.judge. Pre: as matches_printed (DomainError).
+[[nodiscard]] Judgement judge_printed(double value, std::string_view printed, Sense sense);
+
 /// RETIRED (issue 11): the +-10-point tolerance of "about P %" claims. Kept only until the Shi
 /// report moves to assess_value(..., Quantity::percent, ...); new code must not use it.
 inline constexpr double about_percent_tolerance = 10.0;
