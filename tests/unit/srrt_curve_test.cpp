@@ -145,8 +145,16 @@ TEST_CASE("curves.curvature: derivatives agree with Eigen's Splines derivatives 
         INFO("knots " << bs::to_string(ks) << " p " << p << " u " << u);
         CHECK(d.first.x == Approx(e(0, 1)).margin(1e-10));
         CHECK(d.first.y == Approx(e(1, 1)).margin(1e-10));
-        CHECK(d.second.x == Approx(e(0, 2)).margin(1e-9));
-        CHECK(d.second.y == Approx(e(1, 2)).margin(1e-9));
+        // Eigen returns min(p, order) + 1 columns: for p = 1 there is no column 2 (reading it is
+        // out of bounds); the second derivative of a piecewise-linear curve is 0 inside a span.
+        if (p >= 2) {
+          CHECK(d.second.x == Approx(e(0, 2)).margin(1e-9));
+          CHECK(d.second.y == Approx(e(1, 2)).margin(1e-9));
+        } else {
+          REQUIRE(e.cols() == 2);
+          CHECK(d.second.x == 0.0);
+          CHECK(d.second.y == 0.0);
+        }
       }
     }
   }
