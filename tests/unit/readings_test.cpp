@@ -267,3 +267,30 @@ TEST_CASE("prop: classic planners return valid paths and replay by seed") {
     RC_ASSERT(again.extra == r.extra);
   });
 }
+
+TEST_CASE("shi2022.plan.iga: loops = cut by default; under keep the growth stops with a clear error") {
+  // spec/shi2022-ga.md, shi2022.plan.ga "Loops": under loops = keep the weighted fitness let
+  // iga-shi's paths grow on map C until the reproduction was killed at 22 GB (seed 47). The
+  // default cut keeps every child a simple path; keep stops at 64 x W x H nodes.
+  const auto c = paper_map("mapC_20x20_winsleo_traditional.txt");
+  if (!c) {
+    WARN("skipped: the MATLAB maps are not under " << pathref::testing::shared_dir()
+                                                   << "/data/matlab-maps (shared data absent)");
+    return;
+  }
+  CHECK(planners::find_planner("iga-shi")->defaults.at("loops") == "cut");
+  CHECK(planners::find_planner("iha")->defaults.at("loops") == "cut");
+  CHECK(planners::find_planner("ga")->defaults.at("loops") == "keep");
+  const planners::Result r = plan("iga-shi", *c, Cell{0, 0}, Cell{19, 19}, 47, planners::Json::object());
+  REQUIRE(r.found);
+  CHECK(metrics::validate_path(*c, r.path, Cell{0, 0}, Cell{19, 19}, CornerPolicy::strict).valid);
+  Path sorted = r.path;
+  std::sort(sorted.begin(), sorted.end(), [](Cell a, Cell b) { return a.y != b.y ? a.y < b.y : a.x < b.x; });
+  CHECK(std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end());  // a simple path
+  try {
+    (void)plan("iga-shi", *c, Cell{0, 0}, Cell{19, 19}, 47, planners::Json{{"loops", "keep"}});
+    FAIL("loops = keep on map C seed 47 must stop at the node limit");
+  } catch (const DomainError& e) {
+    CHECK(std::string(e.what()).find("use loops = cut") != std::string::npos);
+  }
+}

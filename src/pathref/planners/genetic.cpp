@@ -211,6 +211,10 @@ Config shi_iga() {
   Config c;
   c.fitness = Fitness::weighted;
   c.probabilities = Probabilities::adaptive;
+  // spec shi2022-ga.md, Loops: under the weighted fitness a path with more nodes scores higher,
+  // and with `keep` crossover children grow without bound (iga-shi seed 47 on map C exhausted
+  // 22 GB). `cut` keeps every child a simple path, so the planner runs on the paper's maps.
+  c.loops = Loops::cut;
   return c;
 }
 
@@ -657,6 +661,13 @@ Evolution evolve(const grid::Grid& g, grid::CornerPolicy policy, const Config& c
         ch.first = ga::remove_loops(ch.first);
         ch.second = ga::remove_loops(ch.second);
       }
+      // Under loops = keep a child can be longer than both parents, and the weighted fitness
+      // selects long paths (spec shi2022.plan.ga, Loops): stop with a clear error long before
+      // memory runs out (a simple path has at most W*H nodes).
+      const auto limit = static_cast<std::size_t>(64 * g.cell_count());
+      require(ch.first.size() <= limit && ch.second.size() <= limit,
+              "a crossover child has more than 64 x (map cells) nodes: with loops = keep the paths "
+              "grow without bound (spec shi2022-ga.md, Loops); use loops = cut");
       Individual c1 = make_individual(g, std::move(ch.first), c, Origin::crossover, i);
       Individual c2 = make_individual(g, std::move(ch.second), c, Origin::crossover, i);
       auto kept = keep_two(std::move(pool[p]), std::move(pool[p + 1]), std::move(c1), std::move(c2),

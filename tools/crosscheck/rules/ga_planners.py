@@ -335,7 +335,7 @@ GA_DEFAULTS = {
 }
 GA_DEFAULTS.update({"init_retry": "per_individual", "selection": "independent",
                     "crossover_points": "interior", "mutation": "point", "mutation_attempts": 100000})
-IGA = dict(GA_DEFAULTS, fitness="weighted", ga_probabilities="adaptive")
+IGA = dict(GA_DEFAULTS, fitness="weighted", ga_probabilities="adaptive", loops="cut")
 # spec/classic.md r[classic.plan.ga]: the classic MATLAB GA script's values.
 CLASSIC = dict(GA_DEFAULTS, population=200, generations=50, pc=0.8, pm=0.2, fitness="weighted",
                a=1.0, b=1.0, c=0.0, smoothness="inverse_total", penalties=[3.0, 15.0, 20.0],
