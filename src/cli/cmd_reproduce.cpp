@@ -382,7 +382,14 @@ int run_srrt_cmd(const ReproduceOptions& o) {
   if (o.quick) cmd += " --quick";
   so.provenance = provenance(cmd);
   so.progress = progress_printer();
-  const reproduce::SrrtReproduction rep = reproduce::reproduce_cin2021_srrt(so);
+  std::string load;  // the machine's load when the wall-clock times were measured (reported beside them)
+  {
+    std::ifstream in("/proc/loadavg");
+    std::string a, b, c;
+    if (in >> a >> b >> c) load = a + " " + b + " " + c;
+  }
+  reproduce::SrrtReproduction rep = reproduce::reproduce_cin2021_srrt(so);
+  if (!load.empty()) rep.doc["provenance"]["load_average"] = load;
   return write_outputs(rep.doc, o.out_dir, "cin2021-srrt",
                        reproduce::cin2021_srrt_markdown(rep.doc, "cin2021-srrt", "cin2021-srrt/reproduce.json"),
                        rep.files);

@@ -409,6 +409,37 @@ std::string cin2021_srrt_markdown(const Json& doc, const std::string& figure_dir
       pr.at("seed").get<std::int64_t>() + pr.at("runs_2n").get<std::int64_t>() - 1, pr.at("seed").get<std::int64_t>(),
       n);
   s += "## Verdicts (default readings)\n\n" + md_verdict_summary(doc.at("claims")) + "\n";
+  s += "## Findings\n\n";
+  {
+    std::string enters, trees;
+    for (const Json& sc : doc.at("scenes")) {
+      const auto id = sc.at("id").get<std::string>();
+      const Json& v = sc.at("series").at("s-rrt").at("curve_verdicts_n");
+      const Json& cl = sc.at("series").at("s-rrt").at("summary_n").at("curve_clearance");
+      enters += fmt::format("{}{}: {} of {} (minimum clearance {})", enters.empty() ? "" : "; ", id,
+                            v.value("enters", std::int64_t{0}), sc.at("series").at("s-rrt").at("found_n").get<std::int64_t>(),
+                            md_number(cl["min"], 4));
+      trees += fmt::format("{}{}: {} (S-RRT = Algorithm 1) vs {} (traditional RRT)", trees.empty() ? "" : "; ", id,
+                           md_number(sc.at("series").at("s-rrt").at("summary_n").at("tree_size")["mean"], 1),
+                           md_number(sc.at("series").at("rrt").at("summary_n").at("tree_size")["mean"], 1));
+    }
+    s += "- **S-RRT's curve cuts obstacle corners.** Runs whose Eq. 12–15 curve enters an obstacle (clearance verdict "
+         "`enters`, r = 0), per scene: " + enters + ". Algorithm 2 keeps the nodes where the path wraps an obstacle's "
+         "corner, and a clamped B-spline does not pass through its interior control points: it cuts the corner of its "
+         "control polygon, on the obstacle's side. The kept nodes themselves are collision-free (K.1). The paper does "
+         "not check its curve; a user who needs a collision-free curve plans with a radius or margin (r > 0) or sets "
+         "`repair=true` (pathref's re-insertion, spec/cin2021-srrt.md r[cin2021.srrt.curve]).\n";
+    s += "- **Search effort.** Mean tree size (nodes) to the first solution: " + trees + ". With `near=sample` the goal "
+         "bias steers the node nearest the *random* point towards the goal, so it need not shrink the tree much, and "
+         "S-RRT adds Algorithm 2's visibility checks to the same tree (`variant=ompl`, the nearest-to-target ordering, "
+         "grows far smaller trees: docs/performance.md). Tree sizes are machine-independent (same seeds, same numbers "
+         "anywhere); the running times are not.\n";
+    const Json& la = at_or_null(doc, {"provenance", "load_average"});
+    s += "- **Running times** are sub-millisecond wall-clock times of one machine" +
+         (la.is_string() ? " (load average " + la.get<std::string>() + " at the start: other builds were running)" : std::string()) +
+         "; single runs of several ms are scheduling delays, so the time verdicts are the least robust of this "
+         "report: compare them across the readings and between n and 2n below.\n\n";
+  }
   s += "## Scenes (rebuilt by pathref)\n\n";
   s += md_row({"scene", "what", "rectangles [x₀, x₁] × [y₀, y₁]", "file"});
   s += md_row({"---", "---", "---", "---"});
