@@ -5,7 +5,7 @@
 # Usage (root): bash tools/deps-ompl.sh
 set -euo pipefail
 export DEBIAN_FRONTEND=noninteractive
-apt-get install -y --no-install-recommends libompl-dev
+apt-get install -y --no-install-recommends libompl-dev libboost-filesystem-dev  # omplConfig.cmake links boost_filesystem
 cat <<'MSG'
 OMPL installed. Build and run the peer benchmark:
   cmake -S . -B build-ompl -G Ninja -DCMAKE_BUILD_TYPE=Release -DPATHREF_BENCHMARKS=ON -DPATHREF_OMPL_PEER=ON
