@@ -25,6 +25,7 @@
 #include "pathref/grid/grid.hpp"
 #include "pathref/io/map_file.hpp"
 #include "pathref/reproduce/cin2021.hpp"
+#include "pathref/reproduce/cin2021_srrt.hpp"
 #include "pathref/reproduce/han.hpp"
 #include "pathref/reproduce/runs.hpp"
 #include "pathref/reproduce/sensors2023.hpp"
@@ -370,6 +371,30 @@ int run_sensors2023_cmd(const ReproduceOptions& o) {
                        reproduce::sensors2023_figures(doc));
 }
 
+int run_srrt_cmd(const ReproduceOptions& o) {
+  reproduce::SrrtReproduceOptions so;
+  so.runs = o.runs.empty() ? (o.quick ? 3 : 20) : parse_int(o.runs, "--runs", 2, 1000);
+  so.seed = static_cast<std::uint32_t>(parse_int(o.seed, "--seed", 0, 4294967295LL));
+  if (static_cast<std::uint64_t>(so.seed) + 2 * static_cast<std::uint64_t>(so.runs) - 1 > 4294967295ULL)
+    throw UsageError("--seed + 2 --runs - 1 must not exceed 4294967295 (2n runs are made, reproduce.judge)");
+  std::string cmd = fmt::format("pathref reproduce cin2021-srrt --runs {} --seed {} --out-dir {}", so.runs, so.seed,
+                                o.out_dir);
+  if (o.quick) cmd += " --quick";
+  so.provenance = provenance(cmd);
+  so.progress = progress_printer();
+  std::string load;  // the machine's load when the wall-clock times were measured (reported beside them)
+  {
+    std::ifstream in("/proc/loadavg");
+    std::string a, b, c;
+    if (in >> a >> b >> c) load = a + " " + b + " " + c;
+  }
+  reproduce::SrrtReproduction rep = reproduce::reproduce_cin2021_srrt(so);
+  if (!load.empty()) rep.doc["provenance"]["load_average"] = load;
+  return write_outputs(rep.doc, o.out_dir, "cin2021-srrt",
+                       reproduce::cin2021_srrt_markdown(rep.doc, "cin2021-srrt", "cin2021-srrt/reproduce.json"),
+                       rep.files);
+}
+
 void add_common(CLI::App* cmd, ReproduceOptions& o) {
   cmd->add_option("--runs", o.runs, "runs per stochastic planner and map (default 50; 3 with --quick)")->type_name("N");
   cmd->add_option("--seed", o.seed, "first seed; run r uses seed + r (spec/reproduce.md)")
@@ -436,6 +461,16 @@ void add_reproduce_command(CLI::App& app, Action& run) {
       ->type_name("FILE");
   c->callback([&run] { run = [] { return run_cin2021_cmd(cin); }; });
   add_reproduce_cin2021_ml(cmd, run);
+  static ReproduceOptions srrt;
+  auto* r = cmd->add_subcommand("cin2021-srrt",
+                                "cin2021 §4.3: S-RRT vs RRT on three rebuilt 20x20 scenes, 20 runs each (spec/reproduce.md)");
+  r->add_option("--runs", srrt.runs, "n runs per series and scene; 2n are run (default 20; 3 with --quick)")->type_name("N");
+  r->add_option("--seed", srrt.seed, "first seed; run i uses seed + i in every series")->type_name("S")->capture_default_str();
+  r->add_option("--out-dir", srrt.out_dir, "directory of the report, its JSON and figures")
+      ->type_name("DIR")
+      ->capture_default_str();
+  r->add_flag("--quick", srrt.quick, "3 runs: a smoke test that finishes in seconds");
+  r->callback([&run] { run = [] { return run_srrt_cmd(srrt); }; });
   static std::string job_text;
   auto* j = cmd->add_subcommand("run-job", "Run one job written by --emit-jobs and print its result (JSON) on stdout");
   j->add_option("job", job_text, "the job: a JSON object, or @FILE")->required();

@@ -21,7 +21,32 @@ std::string svg_continuous(const ContinuousScene& om, const continuous::Continuo
   const double w = hi.x - lo.x, h = hi.y - lo.y;
   const double scale = 600.0 / std::max(w, h);
   const double pw = w * scale, ph = h * scale;
-  const double left = 20.0, top = 40.0, legend_w = 220.0;
+  // legend entries first: the canvas is widened to the longest label (a generous 6.6 px per
+  // character of the 11 px sans-serif legend font), so the legend always fits
+  struct Entry {
+    std::string label;
+    const char* colour;
+  };
+  std::vector<Entry> entries{{fmt::format("tree ({} nodes)", run.tree.nodes.size()), "#9ab"}};
+  if (!run.raw.empty())
+    entries.push_back({fmt::format("RRT path (length {:.2f}, {} nodes)", run.raw_metrics.length, run.raw.size()), "#2a2"});
+  else
+    entries.push_back({"no path", "#2a2"});
+  if (!run.shortcut_path.empty())
+    entries.push_back({fmt::format("shortcut (length {:.2f}, {} nodes)", run.shortcut_metrics.length,
+                                   run.shortcut_path.size()),
+                       "#d22"});
+  if (run.curve)
+    entries.push_back({fmt::format("B-spline (degree {}, length {:.2f}, {})", run.curve->degree, run.curve->length,
+                                   geometry::to_string(run.curve->clearance.verdict)),
+                       "#15c"});
+  entries.push_back({"start", "green"});
+  entries.push_back({"goal", "red"});
+  entries.push_back({"obstacle", "black"});
+  std::size_t longest = 0;
+  for (const auto& e : entries) longest = std::max(longest, e.label.size());
+  const double left = 20.0, top = 40.0;
+  const double legend_w = std::max(220.0, 40.0 + 6.6 * static_cast<double>(longest));
   const auto X = [&](double x) { return left + (x - lo.x) * scale; };
   const auto Y = [&](double y) { return top + (hi.y - y) * scale; };
   std::string out = fmt::format(
@@ -63,27 +88,6 @@ std::string svg_continuous(const ContinuousScene& om, const continuous::Continuo
   if (run.curve) polyline(run.curve->samples.points, "curve", "#15c", 2.5);
   out += fmt::format("<circle class=\"start\" cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"6\" fill=\"green\"/>\n", X(start.x), Y(start.y));
   out += fmt::format("<circle class=\"goal\" cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"6\" fill=\"red\"/>\n", X(goal.x), Y(goal.y));
-  // legend
-  struct Entry {
-    std::string label;
-    const char* colour;
-  };
-  std::vector<Entry> entries{{fmt::format("tree ({} nodes)", run.tree.nodes.size()), "#9ab"}};
-  if (!run.raw.empty())
-    entries.push_back({fmt::format("RRT path (length {:.2f}, {} nodes)", run.raw_metrics.length, run.raw.size()), "#2a2"});
-  else
-    entries.push_back({"no path", "#2a2"});
-  if (!run.shortcut_path.empty())
-    entries.push_back({fmt::format("shortcut (length {:.2f}, {} nodes)", run.shortcut_metrics.length,
-                                   run.shortcut_path.size()),
-                       "#d22"});
-  if (run.curve)
-    entries.push_back({fmt::format("B-spline (degree {}, length {:.2f}, {})", run.curve->degree, run.curve->length,
-                                   geometry::to_string(run.curve->clearance.verdict)),
-                       "#15c"});
-  entries.push_back({"start", "green"});
-  entries.push_back({"goal", "red"});
-  entries.push_back({"obstacle", "black"});
   out += "<g class=\"legend\" font-family=\"sans-serif\" font-size=\"11\">\n";
   double ly = top + 10.0;
   for (const auto& e : entries) {
