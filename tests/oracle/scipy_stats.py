@@ -104,6 +104,19 @@ for n, seed, B, stat in [(10, 1, 500, "mean"), (50, 42, 300, "mean"), (12, 5, 40
     close(f"bootstrap {stat} lo n={n}", out["lo"], float(np.quantile(reps, alpha / 2)), 1e-13)
     close(f"bootstrap {stat} hi n={n}", out["hi"], float(np.quantile(reps, 1 - alpha / 2)), 1e-13)
 
+# Paired bootstrap: one index per pair, the same index for a and b (spec stats.bootstrap_ci, paired).
+for n, seed, B, stat in [(12, 3, 400, "mean_difference"), (30, 8, 300, "reduction_percent")]:
+    b = sample(n, "lengths")
+    a = [x - 0.25 * (i % 5) for i, x in enumerate(b)]
+    out = ev("stats.bootstrap_ci", a=a, b=b, paired=True, seed=seed, resamples=B, statistic=stat)
+    u = np.random.RandomState(seed).random_sample(B * n).reshape(B, n)
+    idx = np.minimum(np.floor(u * n).astype(int), n - 1)
+    ma, mb = np.array(a)[idx].mean(axis=1), np.array(b)[idx].mean(axis=1)
+    reps = np.sort(ma - mb if stat == "mean_difference" else 100.0 * (mb - ma) / mb)
+    alpha = 1.0 - 0.95
+    close(f"paired bootstrap {stat} lo n={n}", out["lo"], float(np.quantile(reps, alpha / 2)), 1e-12)
+    close(f"paired bootstrap {stat} hi n={n}", out["hi"], float(np.quantile(reps, 1 - alpha / 2)), 1e-12)
+
 for f in failures:
     print("FAIL " + f)
 print(f"oracle.scipy-stats: {checked - len(failures)} of {checked} values agree with SciPy {scipy.__version__} / NumPy {np.__version__}")

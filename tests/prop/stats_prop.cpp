@@ -84,6 +84,23 @@ TEST_CASE("prop_stats_bootstrap_deterministic_in_seed", "[stats][prop]") {
   });
 }
 
+TEST_CASE("prop_stats_bootstrap_paired_identical_arms_zero", "[stats][prop]") {
+  rc::prop("paired: identical arms give [0, 0]; a constant shift c gives [c, c] up to rounding; lo <= hi", [] {
+    const V a = *gen_sample(2, 20);
+    const auto seed = *rc::gen::inRange<std::uint32_t>(0, 1000);
+    const Interval z = bootstrap_paired_ci(a, a, BootStatistic::mean_difference, {seed, 100, 0.95});
+    RC_ASSERT(z.lo == 0.0);
+    RC_ASSERT(z.hi == 0.0);
+    const double c = *rc::gen::inRange(-50, 51) / 4.0;
+    V b;
+    for (const double x : a) b.push_back(x - c);
+    const Interval s = bootstrap_paired_ci(a, b, BootStatistic::mean_difference, {seed, 100, 0.95});
+    RC_ASSERT(s.lo <= s.hi);
+    RC_ASSERT(std::fabs(s.lo - c) <= 1e-9 * (1.0 + std::fabs(c) + maximum(a) - minimum(a) + 1e3));
+    RC_ASSERT(std::fabs(s.hi - c) <= 1e-9 * (1.0 + std::fabs(c) + maximum(a) - minimum(a) + 1e3));
+  });
+}
+
 TEST_CASE("prop_stats_betainc_symmetry", "[stats][prop]") {
   rc::prop("I_x(a, b) + I_{1-x}(b, a) = 1, in [0, 1], non-decreasing in x", [] {
     const double a = *rc::gen::inRange(1, 400) / 8.0;

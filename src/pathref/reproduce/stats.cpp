@@ -177,6 +177,32 @@ Interval bootstrap_two_sample_ci(std::span<const double> a, std::span<const doub
   return percentile_interval(replicates, options.level);
 }
 
+Interval bootstrap_paired_ci(std::span<const double> a, std::span<const double> b, BootStatistic statistic,
+                             const BootstrapOptions& options) {
+  require(statistic == BootStatistic::mean_difference || statistic == BootStatistic::reduction_percent,
+          "bootstrap_paired_ci: the statistic must be mean_difference or reduction_percent");
+  require(a.size() == b.size(), "bootstrap_paired_ci: a and b must have the same length (pairs)");
+  require(a.size() >= 2, "bootstrap_paired_ci: needs at least two pairs");
+  require_finite(a, "bootstrap_paired_ci");
+  require_finite(b, "bootstrap_paired_ci");
+  if (statistic == BootStatistic::reduction_percent)
+    for (const double v : b) require(v > 0.0, "bootstrap_paired_ci: reduction_percent needs every b value > 0");
+  check_boot_options(options);
+  rng::Stream stream(options.seed);
+  std::vector<double> sa(a.size());
+  std::vector<double> sb(b.size());
+  std::vector<double> replicates(options.resamples);
+  for (double& r : replicates) {
+    for (std::size_t i = 0; i < a.size(); ++i) {
+      const std::size_t k = rng::uniform_index(stream.next_double(), a.size());
+      sa[i] = a[k];
+      sb[i] = b[k];
+    }
+    r = statistic == BootStatistic::mean_difference ? mean(sa) - mean(sb) : reduction_percent(mean(sb), mean(sa));
+  }
+  return percentile_interval(replicates, options.level);
+}
+
 // ---- distributions -------------------------------------------------------------------------
 
 namespace {

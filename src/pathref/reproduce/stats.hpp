@@ -108,6 +108,17 @@ struct BootstrapOptions {
                                                BootStatistic statistic,
                                                const BootstrapOptions& options);
 
+/// Paired percentile bootstrap interval over the pairs (a_i, b_i) (maps on which both arms ran):
+/// as bootstrap_ci, each replicate drawing n indices k_0 .. k_{n-1} (one double each, rng.index(u, n))
+/// and taking a*_i = a[k_i] AND b*_i = b[k_i] (the pairs stay together); statistics
+/// `mean_difference` = mean(a*) - mean(b*) and `reduction_percent` = 100 (mean(b*) - mean(a*)) /
+/// mean(b*) (a's reduction against b, e.g. a = the kinematic A*'s child nodes, b = the 8-direction
+/// search's on the same maps). Spec: stats.bootstrap_ci (paired).
+/// Pre: n_a = n_b >= 2, values finite, 1 <= B <= 10^6, 0 < level < 1, statistic mean_difference or
+/// reduction_percent; reduction_percent: every b value > 0 (DomainError).
+[[nodiscard]] Interval bootstrap_paired_ci(std::span<const double> a, std::span<const double> b,
+                                           BootStatistic statistic, const BootstrapOptions& options);
+
 // ---------------------------------------------------------------------------------------------
 // Distributions and tests
 // ---------------------------------------------------------------------------------------------

@@ -112,9 +112,11 @@ void register_stats_rules(Registry& r) {
              }});
   r.add(Rule{"stats.bootstrap_ci",
              "Seeded percentile bootstrap interval (rng::Stream, stated draw order)",
-             "pathref::reproduce::bootstrap_ci, pathref::reproduce::bootstrap_two_sample_ci",
+             "pathref::reproduce::bootstrap_ci, pathref::reproduce::bootstrap_two_sample_ci, "
+             "pathref::reproduce::bootstrap_paired_ci",
              {{"a", "number[]", "n_a >= 2, finite"},
-              {"b", "number[]", "two-sample statistics only: n_b >= 2, finite"},
+              {"b", "number[]", "two-sample statistics only: n_b >= 2, finite (paired: n_b = n_a)"},
+              {"paired", "boolean", "default false; true: the pairs (a_i, b_i) are resampled together"},
               {"statistic", "string",
                "mean (default) | minimum | mean_difference | reduction_percent | sd_difference"},
               {"seed", "integer", "the stream's seed"},
@@ -128,7 +130,11 @@ void register_stats_rules(Registry& r) {
                o.resamples = resamples_arg(in);
                o.level = in.contains("level") ? arg_number(in, "level") : 0.95;
                const BootStatistic s = parse_boot_statistic(opt_string(in, "statistic", "mean"));
-               const Interval ci = (s == BootStatistic::mean || s == BootStatistic::minimum)
+               const bool paired = in.contains("paired") && in.at("paired").is_boolean() && in.at("paired").get<bool>();
+               if (in.contains("paired") && !in.at("paired").is_boolean())
+                 throw UsageError("stats.bootstrap_ci: 'paired' must be true or false");
+               const Interval ci = paired ? bootstrap_paired_ci(values_arg(in, "a"), values_arg(in, "b"), s, o)
+                                   : (s == BootStatistic::mean || s == BootStatistic::minimum)
                                        ? bootstrap_ci(values_arg(in, "a"), s, o)
                                        : bootstrap_two_sample_ci(values_arg(in, "a"), values_arg(in, "b"), s, o);
                return Json{{"lo", number(ci.lo)}, {"hi", number(ci.hi)}};

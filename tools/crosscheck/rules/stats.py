@@ -89,8 +89,51 @@ ONE = ("mean", "minimum")
 TWO = ("mean_difference", "reduction_percent", "sd_difference")
 
 
+def _bootstrap_paired(inp, stat):
+    """Paired: one index k per pair and replicate, a*_i = a[k], b*_i = b[k] (spec stats.bootstrap_ci)."""
+    require(stat in ("mean_difference", "reduction_percent"), "paired: mean_difference or reduction_percent")
+    a = _values(inp, "a")
+    b = _values(inp, "b")
+    require(len(a) == len(b), "paired samples of different lengths")
+    require(len(a) >= 2, "needs two pairs")
+    _finite(a)
+    _finite(b)
+    if stat == "reduction_percent":
+        require(all(v > 0 for v in b), "reduction_percent needs b > 0")
+    B = inp.get("resamples", 2000)
+    level = _num(inp.get("level", 0.95))
+    require(isinstance(B, int) and 1 <= B <= 10**6, "resamples outside [1, 10^6]")
+    require(math.isfinite(level) and 0.0 < level < 1.0, "level outside (0, 1)")
+    g = MT19937(inp["seed"])
+    n = len(a)
+    reps = []
+    for _ in range(B):
+        sa, sb = [], []
+        for _ in range(n):
+            u = g.genrand_res53()
+            k = min(math.floor(u * float(n)), n - 1)
+            sa.append(a[k])
+            sb.append(b[k])
+        if stat == "mean_difference":
+            r = _mean(sa) - _mean(sb)
+        else:
+            mb = _mean(sb)
+            r = 100.0 * (mb - _mean(sa)) / mb
+        reps.append(r)
+    reps.sort()
+    alpha = 1.0 - level
+    return {"lo": _quantile_sorted(reps, alpha / 2.0), "hi": _quantile_sorted(reps, 1.0 - alpha / 2.0)}
+
+
 def bootstrap_ci(inp):
     stat = inp.get("statistic", "mean")
+    paired = inp.get("paired", False)
+    if not isinstance(paired, bool):
+        raise UsageError("paired must be true or false")
+    if paired:
+        if stat not in ONE + TWO:
+            raise UsageError("unknown statistic")
+        return _bootstrap_paired(inp, stat)
     if stat not in ONE + TWO:
         raise UsageError("unknown statistic")
     a = _values(inp, "a")
