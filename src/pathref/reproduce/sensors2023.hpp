@@ -20,8 +20,8 @@
 namespace pathref::reproduce {
 
 struct Sensors2023Config {
-  std::int64_t maps = 30;  ///< random maps
-  std::uint32_t seed = 1;  ///< random map m uses seed + m
+  std::int64_t maps = 30;  ///< n: the claims are judged on n random maps and on all 2n
+  std::uint32_t seed = 1;  ///< first random-map seed (unconnected maps skipped); also the bootstrap seed
   bool quick = false;
   Provenance provenance;
   Progress progress;
@@ -41,7 +41,11 @@ struct Sensors2023Config {
 [[nodiscard]] grid::Grid sensors2023_random_map(std::uint32_t seed, std::int64_t edge, double density,
                                                 grid::Cell start, grid::Cell goal);
 
-/// Runs the protocol and returns the reproduce.json document. Spec: sensors2023-dwa.md#reproduction.
+/// Runs the protocol and returns the reproduce.json document: the scene, the global planner's
+/// claims, 2n random maps simulated on reproduce::current_execution().jobs threads (results do not
+/// depend on the thread count), the claims judged at n and 2n maps with the statistics of
+/// spec/stats.md (paired bootstrap over maps). Spec: sensors2023-dwa.md#reproduction.
+/// Pre: 1 <= maps <= 10000 and astar-kinematic registered (DomainError).
 [[nodiscard]] nlohmann::json run_sensors2023(const Sensors2023Config& config);
 
 /// docs/reproduction/sensors2023.md from the document.
