@@ -404,7 +404,7 @@ int run_srrt_cmd(const ReproduceOptions& o) {
 }
 
 void add_common(CLI::App* cmd, ReproduceOptions& o) {
-  cmd->add_option("--runs", o.runs, "runs per stochastic planner and map (default 50; 3 with --quick)")->type_name("N");
+  cmd->add_option("--runs", o.runs, "runs per stochastic planner and map (default: the paper's protocol — 50 for shi2022 and han, 20 for cin2021-hga-aco and cin2021-srrt; 3 with --quick)")->type_name("N");
   cmd->add_option("--seed", o.seed, "first seed; run r uses seed + r (spec/reproduce.md)")
       ->type_name("S")
       ->capture_default_str();
