@@ -619,7 +619,10 @@ std::string cin2021_markdown(const Json& doc, const std::string& figure_dir, con
     md += "\n## HGA-ACO against Shi's hybrids (a comparison neither paper makes)\n\n";
     md += "Not claims of either paper and not counted with them: the same rule, HGA-ACO against Shi's IHA and "
           "traditional hybrid on Shi's maps. The X3 rows compare different counts (HGA-ACO's ACO iteration, Shi's GA "
-          "generation).\n\n";
+          "generation). **Every X row against IHA depends on pathref's reading of Shi's Eq. 18**: under it IHA's "
+          "weighted fitness prefers long paths, so IHA returns paths far longer than its own colony's (the known "
+          "problem of docs/reproduction/shi2022.md and spec/shi2022-ga.md \"Measured\"); those rows say nothing "
+          "about Shi's IHA as the paper ran it until that reading is re-decided.\n\n";
     md += md_verdict_summary(doc.at("cross_paper")) + "\n";
     md += md_claims(doc.at("cross_paper"));
   }
