@@ -169,6 +169,7 @@ int main(int argc, char** argv) {
       if (!found) {
         add("OMPL RRT (raw)", false, false, {}, 0);
         add("OMPL RRT + reduceVertices/shortcutPath", false, false, {}, 0);
+        add("OMPL RRT + reduceVertices/shortcutPath + smoothBSpline", false, false, {}, 0);
         add("OMPL RRT + simplifyMax (incl. smoothBSpline)", false, false, {}, 0);
         continue;
       }
@@ -182,6 +183,12 @@ int main(int argc, char** argv) {
       const double shortcut_ms = ms_since(t1);
       add("OMPL RRT + reduceVertices/shortcutPath", true, all_free(map, points(shortcut)), points(shortcut),
           plan_ms + shortcut_ms);
+      og::PathGeometric smoothed = shortcut;  // smoothBSpline alone (defaults: 5 steps, minChange = epsilon)
+      const auto t3 = std::chrono::steady_clock::now();
+      ps.smoothBSpline(smoothed);
+      const double smooth_ms = ms_since(t3);
+      add("OMPL RRT + reduceVertices/shortcutPath + smoothBSpline", true, all_free(map, points(smoothed)),
+          points(smoothed), plan_ms + shortcut_ms + smooth_ms);
       og::PathGeometric full = raw;
       const auto t2 = std::chrono::steady_clock::now();
       ps.simplifyMax(full);
