@@ -79,8 +79,8 @@ bool in_range(const Json& s, double paper_pct, int decimals) {
 }  // namespace
 
 bool within_last_digit(double value, std::string_view printed) {
-  const double paper = std::stod(std::string(printed));
-  return std::abs(value - paper) < std::pow(10.0, -printed_decimals(printed));
+  const double printed_value = std::stod(std::string(printed));
+  return std::abs(value - printed_value) < std::pow(10.0, -printed_decimals(printed));
 }
 
 Claim tenfold_printed_claim(const std::string& id, const std::string& text, double accuracy_pct,
