@@ -164,6 +164,24 @@ void register_curves_rules(Registry& r) {
                     {"curvature", number(bspline::curvature(c, u))}};
       }});
 
+  // One adapter for bspline::basis_functions, which serves cin2021.eq14 and sensors2023.eq7.
+  const std::vector<Field> basis_inputs = {{"knots", "number[]", "u_0 .. u_{m+p}"},
+                                           {"degree", "integer", "p"},
+                                           {"count", "integer", "m, the number of control points"},
+                                           {"u", "number", "in [u_p, u_m]"}};
+  const std::vector<Field> basis_outputs = {{"n", "number[]", "N_{0,p}(u) .. N_{m-1,p}(u)"},
+                                            {"span", "integer", "the knot span k"}};
+  const auto basis_eval = [](const Json& in) {
+    const auto knots = arg_numbers(in, "knots");
+    const int p = degree_arg(in);
+    const std::size_t m = count_arg(in, "count");
+    const double u = arg_number(in, "u");
+    const auto n = bspline::basis_functions(knots, p, m, u);
+    Json a = Json::array();
+    for (double v : n) a.push_back(number(v));
+    return Json{{"n", a}, {"span", bspline::span_index(knots, p, m, u)}};
+  };
+
   // ---- cin2021 S-RRT Eq. 12-15: the same B-spline functions, clamped knots ----
   const auto clamped_curve = [](const Json& in) {
     const auto pts = points_arg(in, "points");
@@ -211,21 +229,7 @@ void register_curves_rules(Registry& r) {
       "cin2021.eq14",
       "Cox-de Boor recursion N_{i,k}(u) with 0/0 := 0 on clamped knots (cin2021 Eq. 14)",
       "pathref::bspline::basis_functions",
-      {{"knots", "number[]", "u_0 .. u_{m+p}"},
-       {"degree", "integer", "p"},
-       {"count", "integer", "m, the number of control points"},
-       {"u", "number", "in [u_p, u_m]"}},
-      {{"n", "number[]", "N_{0,p}(u) .. N_{m-1,p}(u)"}, {"span", "integer", "the knot span k"}},
-      [](const Json& in) {
-        const auto knots = arg_numbers(in, "knots");
-        const int p = degree_arg(in);
-        const std::size_t m = count_arg(in, "count");
-        const double u = arg_number(in, "u");
-        const auto n = bspline::basis_functions(knots, p, m, u);
-        Json a = Json::array();
-        for (double v : n) a.push_back(number(v));
-        return Json{{"n", a}, {"span", bspline::span_index(knots, p, m, u)}};
-      }});
+      basis_inputs, basis_outputs, basis_eval});
   r.add(Rule{
       "cin2021.eq15",
       "Clamped knot vector (end knots repeated k + 1 times; interior uniform or chord-length) (cin2021 Eq. 15)",
@@ -261,21 +265,7 @@ void register_curves_rules(Registry& r) {
       "sensors2023.eq7",
       "Cox-de Boor basis functions N_{i,p}(u), i = 0..m-1 (Sensors 2023 Eq. 7)",
       "pathref::bspline::basis_functions",
-      {{"knots", "number[]", "u_0 .. u_{m+p}"},
-       {"degree", "integer", "p"},
-       {"count", "integer", "m, the number of control points"},
-       {"u", "number", "in [u_p, u_m]"}},
-      {{"n", "number[]", "N_{0,p}(u) .. N_{m-1,p}(u)"}, {"span", "integer", "the knot span k"}},
-      [](const Json& in) {
-        const auto knots = arg_numbers(in, "knots");
-        const int p = degree_arg(in);
-        const std::size_t m = count_arg(in, "count");
-        const double u = arg_number(in, "u");
-        const auto n = bspline::basis_functions(knots, p, m, u);
-        Json a = Json::array();
-        for (double v : n) a.push_back(number(v));
-        return Json{{"n", a}, {"span", bspline::span_index(knots, p, m, u)}};
-      }});
+      basis_inputs, basis_outputs, basis_eval});
   r.add(Rule{
       "sensors2023.eq8",
       "Uniform cubic B-spline segment in matrix form (Sensors 2023 Eq. 8)",
