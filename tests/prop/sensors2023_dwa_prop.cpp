@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "pathref/equations/dwa.hpp"
+#include "pathref/geometry/clearance.hpp"
 #include "pathref/sim/fused.hpp"
 
 using namespace pathref;
@@ -143,7 +144,8 @@ TEST_CASE("prop_dwa_clearance_is_brute_force") {
     double m = 1e300;
     for (std::int64_t y = -6; y < g.height() + 6; ++y)
       for (std::int64_t x = -6; x < g.width() + 6; ++x)
-        if (!g.free(grid::Cell{x, y})) m = std::min(m, cell_surface_distance(p, grid::Cell{x, y}));
+        if (!g.free(grid::Cell{x, y})) m = std::min(m, geometry::point_box_distance(geometry::Vec2{p.x, p.y}, static_cast<double>(x), static_cast<double>(y),
+                                                                   static_cast<double>(x) + 1.0, static_cast<double>(y) + 1.0));
     const double c = point_clearance(p, Obstacles{&g, {}, {}}, radius, cap);
     RC_ASSERT(c == std::min(cap, m - radius));
   });
@@ -192,7 +194,8 @@ TEST_CASE("prop_fused_run_ends_with_one_outcome") {
     const int by = *rc::gen::inRange(0, 4);
     rows[static_cast<std::size_t>(3 - by)][static_cast<std::size_t>(bx)] = '#';
     nlohmann::json sc{{"format", "pathref-sim 2"}, {"map", rows}, {"start", {0, 0}}, {"goal", {W - 1, 3}},
-                      {"t_max", 8.0}, {"dwa", {{"dt", 0.2}, {"horizon", 1.0}, {"v_res", 0.05}, {"w_res", 0.1}}},
+                      {"t_max", 8.0}, {"dwa", {{"dt", 0.2}, {"horizon", 1.0}, {"v_res", 0.05}, {"w_res", 0.1},
+                                               {"heading_target", *rc::gen::element<std::string>("key-node", "waypoint", "goal")}}},
                       {"moving", nlohmann::json::array({nlohmann::json{{"radius", 0.3},
                                                                        {"waypoints", {{0.0, *gen_real(0, W), *gen_real(0, 4)},
                                                                                       {4.0, *gen_real(0, W), *gen_real(0, 4)}}}}})}};
@@ -207,6 +210,29 @@ TEST_CASE("prop_fused_run_ends_with_one_outcome") {
       const double dx = r.samples.back().pose.x - (static_cast<double>(W - 1) + 0.5);
       const double dy = r.samples.back().pose.y - 3.5;
       RC_ASSERT(std::sqrt((dx * dx) + (dy * dy)) <= s.goal_reach);
+    }
+  });
+}
+
+TEST_CASE("prop_dwa_waypoints_cover_the_path") {
+  rc::prop("waypoints: start with N_0, end with N_m, contain every node, consecutive ones at most the spacing apart", [] {
+    const int m = *rc::gen::inRange(1, 6);
+    std::vector<Point> nodes;
+    for (int i = 0; i < m; ++i) nodes.push_back(Point{*gen_real(-10, 10), *gen_real(-10, 10)});
+    const double s = *gen_real(0.1, 3.0);
+    const std::vector<Point> w = path_waypoints(nodes, s);
+    RC_ASSERT(w.front().x == nodes.front().x);
+    RC_ASSERT(w.front().y == nodes.front().y);
+    RC_ASSERT(w.back().x == nodes.back().x);
+    RC_ASSERT(w.back().y == nodes.back().y);
+    std::size_t j = 0;  // every node appears, in order
+    for (const Point& q : nodes) {
+      while (j < w.size() && !(w[j].x == q.x && w[j].y == q.y)) ++j;
+      RC_ASSERT(j < w.size());
+    }
+    for (std::size_t i = 1; i < w.size(); ++i) {
+      const double dx = w[i].x - w[i - 1].x, dy = w[i].y - w[i - 1].y;
+      RC_ASSERT(std::sqrt((dx * dx) + (dy * dy)) <= s * (1.0 + 1e-9));
     }
   });
 }

@@ -7,7 +7,9 @@
 
 #include "pathref/core/error.hpp"
 #include "pathref/equations/dwa.hpp"
+#include "pathref/geometry/clearance.hpp"
 #include "pathref/io/svg_fused.hpp"
+#include "pathref/reproduce/sensors2023.hpp"
 #include "pathref/sim/fused.hpp"
 
 using namespace pathref;
@@ -121,7 +123,7 @@ TEST_CASE("sensors2023.eq14: following heading term, wrapped and unwrapped") {
 TEST_CASE("sensors2023.dwa.clearance: cells, temporary cells, discs, cap") {
   const grid::Grid g = grid::Grid::from_rows_top_first({"...", ".#.", "..."});
   const Obstacles obs{&g, {}, {}};
-  CHECK(cell_surface_distance(Point{0.5, 0.5}, grid::Cell{1, 1}) == Approx(std::sqrt(0.5)));
+  CHECK(geometry::point_box_distance(geometry::Vec2{0.5, 0.5}, 1.0, 1.0, 2.0, 2.0) == Approx(std::sqrt(0.5)));
   // (1.5, 0.75) is 0.25 below the blocked cell (1, 1): 0.25 - 0.3
   CHECK(point_clearance(Point{1.5, 0.75}, obs, 0.3, 1.0) == Approx(-0.05));
   CHECK(point_clearance(Point{1.5, 1.5}, obs, 0.3, 1.0) == -0.3);
@@ -184,6 +186,60 @@ TEST_CASE("sensors2023.dwa.follow: switching, blocked skip and timeout") {
   const FollowUpdate g = follow_update(FollowState{2, 0.0, 0.0}, Point{0.5, 0.5}, k, 1e4, 0.1, fp, std::vector<std::uint8_t>{1, 1, 1});
   CHECK(g.state.k == 2);
   CHECK(g.skipped == SkipReason::none);
+}
+
+TEST_CASE("sensors2023.dwa.follow: waypoints of the global path (heading_target = waypoint)") {
+  // a grid path's key nodes, spacing one cell edge: the straight run gives its cells, the diagonal
+  // run of 2 steps (2.83 m) gets ceil(2.83) = 3 equal parts
+  const std::vector<Point> nodes{{0.5, 0.5}, {3.5, 0.5}, {5.5, 2.5}};
+  const std::vector<Point> w = path_waypoints(nodes, 1.0);
+  REQUIRE(w.size() == 7);
+  CHECK(w[1].x == 1.5);
+  CHECK(w[3].x == 3.5);
+  CHECK(w[4].x == 3.5 + ((1.0 / 3.0) * 2.0));
+  CHECK(w[6].x == 5.5);
+  CHECK(w[6].y == 2.5);
+  // a repeated node adds nothing; a single node is its own list
+  CHECK(path_waypoints(std::vector<Point>{{1.0, 1.0}, {1.0, 1.0}}, 1.0).size() == 1);
+  CHECK_THROWS_AS(path_waypoints(std::vector<Point>{}, 1.0), DomainError);
+  CHECK_THROWS_AS(path_waypoints(nodes, 0.0), DomainError);
+  CHECK_THROWS_AS(path_waypoints(nodes, std::nan("")), DomainError);
+  CHECK_THROWS_AS(path_waypoints(nodes, 1e-6), DomainError);  // 4.2e6 points > 10^6
+}
+
+TEST_CASE("sensors2023.sim.run: the traditional DWA on the rebuilt scene (heading_target waypoint vs goal)") {
+  // Issue 12: under the final-goal reading the paper's baseline stalls on the rebuilt 21 x 21 scene
+  // (3.01 m in 29.9 s); under the default reading (waypoints of the global path) it follows the
+  // A* path to the goal, as the paper's Table 2 row 3 and Fig. 13 show it doing.
+  FusedScenario sc;
+  sc.grid = grid::Grid::from_rows_top_first(reproduce::sensors2023_scene_rows());
+  sc.start = grid::Cell{4, 3};
+  sc.goal = grid::Cell{17, 16};
+  sc.planner = "astar";
+  sc.heading_target = HeadingTarget::waypoint;
+  const FusedResult w = simulate_fused(sc);
+  CHECK(w.outcome == Outcome::reached);
+  CHECK(w.length < 1.1 * 20.7);  // astar's path is 20.7 m on this map
+  CHECK(w.min_clearance >= 0.0);
+  sc.heading_target = HeadingTarget::goal;
+  const FusedResult g = simulate_fused(sc);
+  CHECK(g.outcome == Outcome::stalled);
+  CHECK(g.length < 4.0);
+}
+
+TEST_CASE("reproduce sensors2023: a missing or non-numeric value is an error, never 0") {
+  const nlohmann::json o{{"child_nodes", 66}, {"turns_raw", nullptr}, {"name", "S8"}};
+  CHECK(reproduce::sensors2023_required_number(o, "S8", "child_nodes") == 66.0);
+  CHECK_THROWS_AS(reproduce::sensors2023_required_number(o, "S8", "generated"), DomainError);
+  CHECK_THROWS_AS(reproduce::sensors2023_required_number(o, "S8", "turns_raw"), DomainError);
+  CHECK_THROWS_AS(reproduce::sensors2023_required_number(o, "S8", "name"), DomainError);
+  CHECK_THROWS_AS(reproduce::sensors2023_required_number(nlohmann::json::array(), "S8", "child_nodes"), DomainError);
+  try {
+    (void)reproduce::sensors2023_required_number(o, "scene.S8", "name");
+    FAIL("no error");
+  } catch (const DomainError& e) {
+    CHECK(std::string(e.what()).find("scene.S8.name is not a number") != std::string::npos);
+  }
 }
 
 TEST_CASE("sensors2023.sim.obstacles: waypoints") {
@@ -283,6 +339,22 @@ TEST_CASE("sensors2023.sim.run: scenario parse errors with line and column") {
     CHECK(std::string(e.what()).find("normalised") != std::string::npos);
   }
   CHECK_THROWS_AS(parse_fused_scenario("{\"format\": \"pathref-sim 2\"", "f.json", ""), ParseError);
+  // heading_target: the three readings, anything else an error naming them
+  const FusedScenario ws = parse_fused_scenario(
+      R"({"format": "pathref-sim 2", "map": ["..."], "start": [0, 0], "goal": [2, 0], "dwa": {"heading_target": "waypoint"},
+          "follow": {"waypoint_spacing": 0.5}})", "f.json", "");
+  CHECK(ws.heading_target == HeadingTarget::waypoint);
+  CHECK(ws.waypoint_spacing == 0.5);
+  CHECK(params_json(ws).at("dwa").at("heading_target") == "waypoint");
+  try {
+    (void)parse_fused_scenario(R"({"format": "pathref-sim 2", "map": ["..."], "start": [0, 0], "goal": [2, 0], "dwa": {"heading_target": "next"}})",
+                               "f.json", "");
+    FAIL("no error");
+  } catch (const ParseError& e) {
+    CHECK(std::string(e.what()).find("\"waypoint\"") != std::string::npos);
+  }
+  CHECK_THROWS_AS(parse_fused_scenario(R"({"format": "pathref-sim 2", "map": ["..."], "start": [0, 0], "goal": [2, 0], "follow": {"waypoint_spacing": 0}})",
+                                       "f.json", ""), ParseError);
   CHECK_THROWS_AS(parse_fused_scenario(R"({"format": "pathref-sim 2", "map": ["..."], "start": [0, 0], "goal": [2, 0], "bogus": 1})", "f.json", ""), ParseError);
   CHECK(scenario_format(R"({"format": "pathref-sim 1"})") == "pathref-sim 1");
   CHECK(scenario_format("not json").empty());

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "pathref/core/error.hpp"
+#include "pathref/geometry/clearance.hpp"
 #include "pathref/sim/encounter.hpp"
 
 namespace pathref::dwa {
@@ -240,14 +241,6 @@ Choice evaluate(std::span<const Terms> terms, const Weights& w, Evaluation mode,
 
 // ---------------------------------------------------------------- clearance
 
-double cell_surface_distance(Point p, grid::Cell c) noexcept {
-  const double x0 = static_cast<double>(c.x);
-  const double y0 = static_cast<double>(c.y);
-  const double dx = std::max(std::max(x0 - p.x, 0.0), p.x - (x0 + 1.0));
-  const double dy = std::max(std::max(y0 - p.y, 0.0), p.y - (y0 + 1.0));
-  return std::sqrt((dx * dx) + (dy * dy));
-}
-
 namespace {
 
 void require_obstacles(const Obstacles& obs, double radius, double cap) {
@@ -257,6 +250,14 @@ void require_obstacles(const Obstacles& obs, double radius, double cap) {
   for (const Disc& d : obs.discs)
     require(finite(d.c.x) && finite(d.c.y) && finite(d.r) && d.r >= 0.0 && finite(d.vel.x) && finite(d.vel.y),
             "sensors2023.dwa.clearance: discs must be finite with radius >= 0");
+}
+
+// Surface distance of p to the closed cell square [c.x, c.x + 1] x [c.y, c.y + 1]: the shared
+// point-to-box distance of curves.clearance (geometry/clearance.hpp), one function for both.
+double cell_surface(Point p, grid::Cell c) noexcept {
+  const auto x0 = static_cast<double>(c.x);
+  const auto y0 = static_cast<double>(c.y);
+  return geometry::point_box_distance(geometry::Vec2{p.x, p.y}, x0, y0, x0 + 1.0, y0 + 1.0);
 }
 
 // point_clearance without the checks (the caller checked the obstacles once).
@@ -272,9 +273,9 @@ double clearance_unchecked(Point p, const Obstacles& obs, double radius, double 
     for (std::int64_t x = x0; x <= x1; ++x) {
       const grid::Cell c{x, y};
       if (g.free(c)) continue;
-      m = std::min(m, cell_surface_distance(p, c));
+      m = std::min(m, cell_surface(p, c));
     }
-  for (const grid::Cell& c : obs.temporary) m = std::min(m, cell_surface_distance(p, c));
+  for (const grid::Cell& c : obs.temporary) m = std::min(m, cell_surface(p, c));
   for (const Disc& d : obs.discs) {
     const double dx = p.x - (d.c.x + (tau * d.vel.x));
     const double dy = p.y - (d.c.y + (tau * d.vel.y));
@@ -397,6 +398,37 @@ std::vector<grid::Cell> key_nodes(std::span<const grid::Cell> path) {
     if (!straight) out.push_back(p[i]);
   }
   if (p.size() > 1) out.push_back(p.back());
+  return out;
+}
+
+std::vector<Point> path_waypoints(std::span<const Point> nodes, double spacing) {
+  require(!nodes.empty(), "sensors2023.dwa.follow: waypoints of an empty path");
+  require(finite(spacing) && spacing > 0.0, "sensors2023.dwa.follow: waypoint spacing must be finite and > 0");
+  for (const Point& q : nodes) require(finite(q.x) && finite(q.y), "sensors2023.dwa.follow: path nodes must be finite");
+  // the part counts first, so the limit is checked before allocating
+  std::vector<std::int64_t> parts(nodes.size(), 0);
+  double total = 1.0;
+  for (std::size_t i = 0; i + 1 < nodes.size(); ++i) {
+    const double dx = nodes[i + 1].x - nodes[i].x, dy = nodes[i + 1].y - nodes[i].y;
+    const double len = std::sqrt((dx * dx) + (dy * dy));
+    if (len == 0.0) continue;
+    const double n = std::max(1.0, std::ceil((len / spacing) - 1e-9));
+    require(total + n <= 1e6, "sensors2023.dwa.follow: at most 10^6 waypoints");
+    total = total + n;
+    parts[i] = static_cast<std::int64_t>(n);
+  }
+  std::vector<Point> out;
+  out.reserve(static_cast<std::size_t>(total));
+  out.push_back(nodes.front());
+  for (std::size_t i = 0; i + 1 < nodes.size(); ++i) {
+    const Point a = nodes[i], b = nodes[i + 1];
+    const std::int64_t n = parts[i];
+    for (std::int64_t j = 1; j < n; ++j) {
+      const double f = static_cast<double>(j) / static_cast<double>(n);
+      out.push_back(Point{a.x + (f * (b.x - a.x)), a.y + (f * (b.y - a.y))});
+    }
+    if (n > 0) out.push_back(b);
+  }
   return out;
 }
 

@@ -188,10 +188,6 @@ struct Obstacles {
   std::span<const Disc> discs;
 };
 
-/// Surface distance of p to the closed cell square c: sqrt((dx dx) + (dy dy)),
-/// dx = max(c.x - p.x, 0, p.x - (c.x + 1)). Source: pathref. Spec: sensors2023.dwa.clearance.
-[[nodiscard]] double cell_surface_distance(Point p, grid::Cell c) noexcept;
-
 /// Point clearance min(cap, min_o surf(p, o) - radius), examining cells within cap + radius; each
 /// disc taken at c + (tau vel) (its predicted position tau seconds ahead).
 /// Source: pathref. Spec: sensors2023.dwa.clearance. Pre: finite p, tau; cap > 0 finite; radius >= 0;
@@ -247,6 +243,18 @@ struct StepResult {
 /// Source: sensors2023, Sec. 3.3 ("Extract the key nodes in the global path"). Spec: sensors2023.dwa.follow.
 /// Pre: path non-empty (DomainError).
 [[nodiscard]] std::vector<grid::Cell> key_nodes(std::span<const grid::Cell> path);
+
+/// Target points of the traditional A*+DWA fusion (reading `heading_target = waypoint`): the global
+/// path's polyline through `nodes` divided segment by segment into n = max(1, ceil(L/spacing - 1e-9))
+/// equal parts (L the segment length), the nodes themselves kept exactly: W = N_0, then for every
+/// segment (N_i, N_{i+1}) and j = 1 .. n the point N_i + ((j/n)(N_{i+1} - N_i)) (j = n: N_{i+1}).
+/// A segment of length 0 (consecutive equal nodes) adds nothing. With spacing one cell edge the
+/// waypoints of a grid path are its cells' centres (diagonal steps get their midpoints).
+/// Source: sensors2023, Sec. 3.3 ("the target points of path of DWA algorithm are proposed by the
+/// global path"); pathref. Spec: sensors2023.dwa.follow.
+/// Pre: nodes non-empty and finite, spacing finite > 0, at most 10^6 points (checked before
+/// allocating) (DomainError). Golden: golden/sensors2023-dwa/sensors2023.dwa.follow.json
+[[nodiscard]] std::vector<Point> path_waypoints(std::span<const Point> nodes, double spacing);
 
 struct FollowParams {
   double reach = 1.0;

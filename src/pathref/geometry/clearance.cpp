@@ -15,12 +15,6 @@ constexpr double inf = std::numeric_limits<double>::infinity();
 
 bool finite(Vec2 p) noexcept { return std::isfinite(p.x) && std::isfinite(p.y); }
 
-double point_box(Vec2 p, double x0, double y0, double x1, double y1) noexcept {
-  const double dx = std::max({x0 - p.x, 0.0, p.x - x1});
-  const double dy = std::max({y0 - p.y, 0.0, p.y - y1});
-  return std::sqrt((dx * dx) + (dy * dy));
-}
-
 double point_segment(Vec2 p, Vec2 a, Vec2 b) noexcept {
   const double dx = b.x - a.x;
   const double dy = b.y - a.y;
@@ -57,7 +51,7 @@ bool segment_meets_box(Vec2 a, Vec2 b, double x0, double y0, double x1, double y
 
 double box_distance(Vec2 a, Vec2 b, double x0, double y0, double x1, double y1) noexcept {
   if (segment_meets_box(a, b, x0, y0, x1, y1)) return 0.0;
-  double d = std::min(point_box(a, x0, y0, x1, y1), point_box(b, x0, y0, x1, y1));
+  double d = std::min(point_box_distance(a, x0, y0, x1, y1), point_box_distance(b, x0, y0, x1, y1));
   d = std::min(d, point_segment(Vec2{x0, y0}, a, b));
   d = std::min(d, point_segment(Vec2{x1, y0}, a, b));
   d = std::min(d, point_segment(Vec2{x0, y1}, a, b));
@@ -117,6 +111,12 @@ std::string_view to_string(ClearanceVerdict v) noexcept {
     case ClearanceVerdict::undetermined: return "undetermined";
   }
   return "undetermined";
+}
+
+double point_box_distance(Vec2 p, double x0, double y0, double x1, double y1) noexcept {
+  const double dx = std::max({x0 - p.x, 0.0, p.x - x1});
+  const double dy = std::max({y0 - p.y, 0.0, p.y - y1});
+  return std::sqrt((dx * dx) + (dy * dy));
 }
 
 double segment_box_distance(Vec2 a, Vec2 b, double x0, double y0, double x1, double y1) {

@@ -67,6 +67,15 @@ struct Clearance {
   std::int64_t segment = -1;
 };
 
+/// Distance from the point p to the closed box [x0, x1] x [y0, y1]: sqrt((dx dx) + (dy dy)) with
+/// dx = max(x0 - p.x, 0, p.x - x1), dy likewise (0 inside or on the boundary). The point case of
+/// segment_box_distance (which uses it for the segment's end points) and the surface distance of
+/// a point to a cell of the DWA's clearance (the cell [c.x, c.x + 1] x [c.y, c.y + 1]): one
+/// function for both. Source: pathref. Spec: curves.clearance, sensors2023.dwa.clearance.
+/// Pre: finite inputs, x0 <= x1, y0 <= y1 (not checked: called per predicted point and cell;
+/// callers check their inputs). Post: >= 0.
+[[nodiscard]] double point_box_distance(Vec2 p, double x0, double y0, double x1, double y1) noexcept;
+
 /// Distance from the segment [a, b] to the closed square [x0, x1] x [y0, y1] (method above).
 /// Source: pathref. Spec: curves.clearance. Pre: finite inputs, x0 <= x1, y0 <= y1
 /// (DomainError). Post: >= 0; 0 iff they intersect.

@@ -41,6 +41,13 @@ struct Sensors2023Config {
 [[nodiscard]] grid::Grid sensors2023_random_map(std::uint32_t seed, std::int64_t edge, double density,
                                                 grid::Cell start, grid::Cell goal);
 
+/// The number `object[key]` of a result document, for the claims (spec sensors2023-dwa.md
+/// "Reproduction": a claim is never judged on a guessed value). `where` names the object in the
+/// message. Throws DomainError("reproduce sensors2023: <where>.<key> is missing" / "... is not a
+/// number (got <json>)") when `object` is not an object, lacks `key` or holds no number there.
+[[nodiscard]] double sensors2023_required_number(const nlohmann::json& object, const std::string& where,
+                                                 const std::string& key);
+
 /// Runs the protocol and returns the reproduce.json document: the scene, the global planner's
 /// claims, 2n random maps simulated on reproduce::current_execution().jobs threads (results do not
 /// depend on the thread count), the claims judged at n and 2n maps with the statistics of

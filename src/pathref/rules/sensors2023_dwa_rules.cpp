@@ -245,7 +245,7 @@ void register_sensors2023_dwa_rules(Registry& r) {
   r.add(Rule{
       "sensors2023.dwa.clearance",
       "Clearance of a point / a predicted trajectory: min(cap, surface distance to cells and discs - robot radius)",
-      "pathref::dwa::point_clearance, pathref::dwa::trajectory_clearance, pathref::dwa::cell_surface_distance",
+      "pathref::dwa::point_clearance, pathref::dwa::trajectory_clearance, pathref::geometry::point_box_distance",
       {{"grid", "grid", "rows, top first (cells outside count as blocked)"},
        {"points", "number[2][]", "the trajectory P_1 ... P_N (one point: a point clearance)"},
        {"radius", "number", "robot radius, m"}, {"cap", "number", "clearance cap, m"},
@@ -300,18 +300,27 @@ void register_sensors2023_dwa_rules(Registry& r) {
   r.add(Rule{
       "sensors2023.dwa.follow",
       "Key nodes of a path (turning cells) and the switching / skipping rule of the current key node",
-      "pathref::dwa::follow_update, pathref::dwa::key_nodes",
+      "pathref::dwa::follow_update, pathref::dwa::key_nodes, pathref::dwa::path_waypoints",
       {{"path", "cell[]", "optional: a global path; outputs its key nodes"},
+       {"waypoints_of", "number[2][]", "optional: path nodes (m); outputs their waypoints (heading_target = waypoint)"},
+       {"spacing", "number", "optional (1.0): waypoint spacing"},
        {"keys", "number[2][]", "key node points (m)"}, {"blocked", "bool[]", "per key node"},
        {"k", "integer", "current key index"}, {"since", "number", ""}, {"blocked_for", "number", ""},
        {"p", "number[2]", "robot position"}, {"t", "number", "now"}, {"dt", "number", ""},
        {"reach", "number", "optional (1.0)"}, {"blocked_timeout", "number", "optional (3)"},
        {"key_timeout", "number", "optional (30)"}},
-      {{"key_nodes", "cell[]", "with path"}, {"k", "integer", ""}, {"since", "number", ""},
+      {{"key_nodes", "cell[]", "with path"}, {"waypoints", "number[2][]", "with waypoints_of"}, {"k", "integer", ""}, {"since", "number", ""},
        {"blocked_for", "number", ""}, {"switched", "integer", ""}, {"skipped", "string", "none | blocked | timeout"}},
       [](const Json& in) {
         Json out = Json::object();
         if (in.contains("path")) out["key_nodes"] = grid::path_to_json(key_nodes(grid::path_from_json(arg(in, "path"))));
+        if (in.contains("waypoints_of")) {
+          std::vector<Point> nodes;
+          for (const Json& q : arg(in, "waypoints_of")) nodes.push_back(point_of(q, "a path node"));
+          Json w = Json::array();
+          for (const Point& q : path_waypoints(nodes, opt_num(in, "spacing", 1.0))) w.push_back(Json::array({number(q.x), number(q.y)}));
+          out["waypoints"] = w;
+        }
         if (in.contains("keys")) {
           std::vector<Point> keys;
           for (const Json& k : arg(in, "keys")) keys.push_back(point_of(k, "a key node"));

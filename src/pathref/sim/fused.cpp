@@ -207,7 +207,7 @@ const Json* find(const Json& obj, const char* key) {
   return it == obj.end() ? nullptr : &*it;
 }
 
-DwaParams read_dwa(const Reader& rd, const Json& o, const std::string& ptr, DwaParams p, bool* to_goal) {
+DwaParams read_dwa(const Reader& rd, const Json& o, const std::string& ptr, DwaParams p, HeadingTarget* target) {
   rd.keys(o, ptr, {"dt", "horizon", "v_min", "v_max", "w_max", "acc_v", "dec_v", "acc_w", "dec_w", "v_res", "w_res",
                    "alpha", "beta", "gamma", "k_heading", "k_clearance", "k_velocity", "clearance_cap",
                    "evaluation", "clearance_at", "heading_wrap", "window_upper", "admissible", "motion_order",
@@ -254,9 +254,10 @@ DwaParams read_dwa(const Reader& rd, const Json& o, const std::string& ptr, DwaP
   }
   if (const Json* v = find(o, "heading_target")) {
     const std::string s = rd.string(*v, ptr + "/heading_target");
-    if (s != "key-node" && s != "goal")
-      rd.fail(ptr + "/heading_target", "expected \"key-node\" or \"goal\", got \"" + s + "\"");
-    if (to_goal != nullptr) *to_goal = s == "goal";
+    if (s != "key-node" && s != "waypoint" && s != "goal")
+      rd.fail(ptr + "/heading_target", "expected \"key-node\", \"waypoint\" or \"goal\", got \"" + s + "\"");
+    if (target != nullptr)
+      *target = s == "goal" ? HeadingTarget::goal : s == "waypoint" ? HeadingTarget::waypoint : HeadingTarget::key_node;
   }
   return p;
 }
@@ -346,7 +347,7 @@ FusedScenario read_scenario(const Reader& rd, const Json& doc, const std::string
   }
   if (const Json* v = find(doc, "seed")) s.seed = static_cast<std::uint32_t>(rd.integer(*v, "/seed", 0, 4294967295LL));
   if (const Json* v = find(doc, "heading0")) s.heading0 = rd.number(*v, "/heading0", -1e3, 1e3);
-  if (const Json* v = find(doc, "dwa")) s.dwa = read_dwa(rd, *v, "/dwa", s.dwa, &s.heading_to_goal);
+  if (const Json* v = find(doc, "dwa")) s.dwa = read_dwa(rd, *v, "/dwa", s.dwa, &s.heading_target);
   if (const Json* v = find(doc, "t_max")) s.t_max = rd.number(*v, "/t_max", 0.0, 1e5, true);
   if (s.t_max / s.dwa.dt > max_fused_steps) rd.fail("/t_max", "expected t_max / dt <= 10^6");
   if (const Json* v = find(doc, "robot")) {
@@ -354,7 +355,7 @@ FusedScenario read_scenario(const Reader& rd, const Json& doc, const std::string
     if (const Json* r = find(*v, "radius")) s.dwa.radius = rd.number(*r, "/robot/radius", 0.0, 10.0);
   }
   if (const Json* v = find(doc, "follow")) {
-    rd.keys(*v, "/follow", {"reach", "goal_reach", "blocked_margin", "blocked_timeout", "key_timeout"});
+    rd.keys(*v, "/follow", {"reach", "goal_reach", "blocked_margin", "blocked_timeout", "key_timeout", "waypoint_spacing"});
     if (const Json* r = find(*v, "reach")) s.follow.reach = rd.number(*r, "/follow/reach", 0.0, 100.0, true);
     if (const Json* r = find(*v, "goal_reach")) s.goal_reach = rd.number(*r, "/follow/goal_reach", 0.0, 100.0, true);
     if (const Json* r = find(*v, "blocked_margin"))
@@ -363,6 +364,8 @@ FusedScenario read_scenario(const Reader& rd, const Json& doc, const std::string
       s.follow.blocked_timeout = rd.number(*r, "/follow/blocked_timeout", 0.0, 1e5, true);
     if (const Json* r = find(*v, "key_timeout"))
       s.follow.key_timeout = rd.number(*r, "/follow/key_timeout", 0.0, 1e5, true);
+    if (const Json* r = find(*v, "waypoint_spacing"))
+      s.waypoint_spacing = rd.number(*r, "/follow/waypoint_spacing", 0.01, 100.0);
   }
   if (const Json* v = find(doc, "stall")) {
     rd.keys(*v, "/stall", {"window", "distance"});
@@ -464,9 +467,18 @@ FusedScenario fused_scenario_from_json(const Json& doc, std::string_view file) {
   return read_scenario(rd, doc, "");
 }
 
-DwaParams dwa_params_from_json(const Json& block, DwaParams base, bool* heading_to_goal) {
+DwaParams dwa_params_from_json(const Json& block, DwaParams base, HeadingTarget* heading_target) {
   const Reader rd("<eval>", {}, nullptr);
-  return read_dwa(rd, block, "/dwa", base, heading_to_goal);
+  return read_dwa(rd, block, "/dwa", base, heading_target);
+}
+
+std::string_view to_string(HeadingTarget h) noexcept {
+  switch (h) {
+    case HeadingTarget::key_node: return "key-node";
+    case HeadingTarget::waypoint: return "waypoint";
+    case HeadingTarget::goal: return "goal";
+  }
+  return "key-node";
 }
 
 std::string_view to_string(Outcome o) noexcept {
@@ -520,6 +532,8 @@ FusedResult simulate_fused(const FusedScenario& s) {
     res.outcome = Outcome::no_global_path;
     return res;
   }
+  // the target points the follow rule switches through: the key nodes, or under
+  // heading_target = waypoint the global path's waypoints (path_waypoints of the key nodes)
   std::vector<Point> keys;
   for (const grid::Cell& c : g.keys) keys.push_back(centre_of(c));
   const Point goal = centre_of(s.goal);
@@ -530,6 +544,7 @@ FusedResult simulate_fused(const FusedScenario& s) {
   } else if (keys.size() > 1) {
     pose.theta = std::atan2(keys[1].y - keys[0].y, keys[1].x - keys[0].x);
   }
+  if (s.heading_target == HeadingTarget::waypoint) keys = path_waypoints(keys, s.waypoint_spacing);
   double v = 0.0, w = 0.0;
   FollowState fs;
   const auto stall_n = static_cast<std::int64_t>(std::llround(s.stall_window / dt));
@@ -585,7 +600,7 @@ FusedResult simulate_fused(const FusedScenario& s) {
       break;
     }
     // 5. control step
-    const Point target = s.heading_to_goal ? goal : keys[static_cast<std::size_t>(fs.k)];
+    const Point target = s.heading_target == HeadingTarget::goal ? goal : keys[static_cast<std::size_t>(fs.k)];
     const StepResult st = control_step(pose, v, w, target, obs, s.dwa);
     res.braked_steps += st.braked ? 1 : 0;
     v = st.v;
@@ -688,7 +703,7 @@ Json params_json(const FusedScenario& s) {
                 {"window_upper", std::string(to_string(d.window_upper))},
                 {"admissible", std::string(to_string(d.admissible))},
                 {"motion_order", std::string(to_string(d.motion_order))},
-                {"heading_target", s.heading_to_goal ? "goal" : "key-node"},
+                {"heading_target", std::string(to_string(s.heading_target))},
                 {"obstacle_prediction", d.predict_movers ? "linear" : "static"}}},
               {"robot", {{"radius", d.radius}}},
               {"follow",
@@ -696,7 +711,8 @@ Json params_json(const FusedScenario& s) {
                 {"goal_reach", s.goal_reach},
                 {"blocked_margin", s.blocked_margin},
                 {"blocked_timeout", s.follow.blocked_timeout},
-                {"key_timeout", s.follow.key_timeout}}},
+                {"key_timeout", s.follow.key_timeout},
+                {"waypoint_spacing", s.waypoint_spacing}}},
               {"stall", {{"window", s.stall_window}, {"distance", s.stall_distance}}},
               {"turns", {{"ds", s.turns.ds}, {"delta_deg", s.turns.delta * deg_per_rad}, {"theta_deg", s.turns.theta * deg_per_rad}}}};
 }

@@ -30,6 +30,14 @@ struct Temporary {
   double disappear = 0.0;
 };
 
+/// What the DWA's heading term (Eq. 14) aims at (spec sensors2023.sim.run, reading `heading_target`):
+/// `key_node` the current key node (the following DWA, the paper's improvement); `waypoint` the
+/// current waypoint of the global path at spacing `waypoint_spacing` (the traditional A*+DWA
+/// fusion, the default reading of "traditional DWA"); `goal` the final goal throughout (the
+/// literal traditional DWA, reading `traditional_dwa = final_goal`).
+enum class HeadingTarget { key_node, waypoint, goal };
+[[nodiscard]] std::string_view to_string(HeadingTarget h) noexcept;
+
 /// Every input of a fused run (spec sensors2023.sim.run lists the keys and the project defaults).
 struct FusedScenario {
   grid::Grid grid{1, 1};
@@ -43,8 +51,9 @@ struct FusedScenario {
   std::optional<double> heading0;
   double t_max = 300.0;
   DwaParams dwa;
-  bool heading_to_goal = false;  ///< heading_target = goal: the traditional DWA
+  HeadingTarget heading_target = HeadingTarget::key_node;
   FollowParams follow;
+  double waypoint_spacing = 1.0;  ///< follow.waypoint_spacing (heading_target = waypoint), m
   double goal_reach = 0.5;
   double blocked_margin = 0.2;
   double stall_window = 10.0;
@@ -71,7 +80,8 @@ inline constexpr double max_fused_steps = 1000000.0;
 
 /// Parses a "dwa" block (the keys of the scenario's `dwa` object) over `base`; for `pathref eval`.
 /// Spec: sensors2023.sim.run. Throws ParseError("<eval>", 0, 0, ...) on a bad key or value.
-[[nodiscard]] DwaParams dwa_params_from_json(const Json& block, DwaParams base, bool* heading_to_goal = nullptr);
+[[nodiscard]] DwaParams dwa_params_from_json(const Json& block, DwaParams base,
+                                             HeadingTarget* heading_target = nullptr);
 
 /// The "format" value of a scenario text ("" when absent or not JSON): lets the CLI dispatch.
 [[nodiscard]] std::string scenario_format(std::string_view text);
@@ -84,7 +94,7 @@ struct FusedSample {
   Pose pose;
   double v = 0.0;
   double w = 0.0;
-  std::int64_t key = 0;
+  std::int64_t key = 0;  ///< index into the run's target points (key nodes, or waypoints)
 };
 
 struct Skip {

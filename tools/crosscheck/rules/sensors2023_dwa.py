@@ -413,8 +413,34 @@ def follow(state, p, keys, blocked, t, dt, reach, btimeout, ktimeout):
     return (k, since, bfor), switched, skipped
 
 
+def waypoints(nodes, spacing):
+    """Target points of the traditional fusion: each segment in ceil(L/spacing - 1e-9) equal parts."""
+    require(len(nodes) > 0, "empty path")
+    require(fin(spacing) and spacing > 0, "spacing")
+    for q in nodes:
+        require(fin(*q), "finite")
+    out = [tuple(nodes[0])]
+    total = 1.0
+    for a, b in zip(nodes, nodes[1:]):
+        dx, dy = b[0] - a[0], b[1] - a[1]
+        L = math.sqrt(dx * dx + dy * dy)
+        if L == 0.0:
+            continue
+        n = max(1.0, math.ceil(L / spacing - 1e-9))
+        require(total + n <= 1e6, "at most 10^6 waypoints")
+        total += n
+        n = int(n)
+        for j in range(1, n):
+            f = float(j) / float(n)
+            out.append((a[0] + f * (b[0] - a[0]), a[1] + f * (b[1] - a[1])))
+        out.append(tuple(b))
+    return out
+
+
 def follow_rule(inp):
     out = {}
+    if "waypoints_of" in inp:
+        out["waypoints"] = [list(q) for q in waypoints(inp["waypoints_of"], opt(inp, "spacing", 1.0))]
     if "path" in inp:
         out["key_nodes"] = [list(c) for c in keys_of(inp["path"])]
     if "keys" in inp:
@@ -603,7 +629,9 @@ def run(sc):
         raise UsageError("the crosscheck runs scenarios with an explicit path only")
     path = [tuple(c) for c in sc["path"]]
     p = dwa_params(sc.get("dwa"))
-    to_goal = p["heading_target"] == "goal"
+    target_mode = p["heading_target"]
+    require(target_mode in ("key-node", "waypoint", "goal"), "heading_target")
+    to_goal = target_mode == "goal"
     radius = sc.get("robot", {}).get("radius", 0.3)
     fo = sc.get("follow", {})
     reach, goal_reach = fo.get("reach", 1.0), fo.get("goal_reach", 0.5)
@@ -623,6 +651,8 @@ def run(sc):
     dt = p["dt"]
     theta0 = sc["heading0"] if "heading0" in sc else (
         math.atan2(keys[1][1] - keys[0][1], keys[1][0] - keys[0][0]) if len(keys) > 1 else 0.0)
+    if target_mode == "waypoint":
+        keys = waypoints(keys, fo.get("waypoint_spacing", 1.0))
     pose = (keys[0][0], keys[0][1], theta0)
     v = w = 0.0
     state = (0, 0.0, 0.0)
