@@ -205,3 +205,39 @@ class TestTraceability(unittest.TestCase):
 
 if __name__ == "__main__":
     unittest.main()
+
+
+class TestConfidenceGrades(unittest.TestCase):
+    """cin2021/sensors2023 rules must carry a grade that the index and the golden source block agree on."""
+
+    def setUp(self):
+        self.repo = MiniRepo()
+        rid = "sensors2023.demo"
+        self.repo.index = json.loads(json.dumps(self.repo.index).replace("demo.a", rid))
+        self.repo.files = {k: v.replace("demo.a", rid) for k, v in self.repo.files.items()}
+        self.repo.index["rules"][0].update({"grade": "B", "reconstructed": True, "grade_basis": "eq14 (B)"})
+        self.repo.files["golden/demo/" + rid + ".json"] = json.dumps(
+            {"rule": rid, "module": "demo", "source": {"grade": "B", "reconstructed": True}})
+        self.repo.index["rules"][0]["golden"] = "golden/demo/" + rid + ".json"
+        self.repo.files["bin/pathref"] = ("#!/bin/sh\nprintf '" + rid +
+                                          "  [grade B, reconstructed]  The rule\\n    in  x : integer - x\\n'\n")
+
+    def tearDown(self):
+        self.repo.cleanup()
+
+    def test_graded_rule_passes(self):
+        rc, out = self.repo.build().run()
+        self.assertEqual(rc, 0, out)
+
+    def test_missing_grade_is_a_gap(self):
+        del self.repo.index["rules"][0]["grade"]
+        rc, out = self.repo.build().run()
+        self.assertEqual(rc, 1, out)
+        self.assertIn("sensors2023.demo: grade: index \"grade\" must be A, B or C", out)
+
+    def test_golden_grade_must_agree(self):
+        self.repo.files["golden/demo/sensors2023.demo.json"] = json.dumps(
+            {"rule": "sensors2023.demo", "module": "demo", "source": {"grade": "A", "reconstructed": True}})
+        rc, out = self.repo.build().run()
+        self.assertEqual(rc, 1, out)
+        self.assertIn("golden source block has grade 'A'", out)
