@@ -63,11 +63,15 @@ const BenchMap& bench_map(std::int64_t percent) {
   return cache.emplace(percent, std::move(m)).first->second;
 }
 
-void run(benchmark::State& state, Heuristic h) {
+/// One plan per iteration; with `reuse`, through one search::Workspace kept across iterations
+/// (spec/search.md "Reusing the search state"), else with the per-call allocation.
+void run(benchmark::State& state, Heuristic h, bool reuse = false) {
   const BenchMap& m = bench_map(state.range(0));
   pathref::search::Outcome last;
+  pathref::search::Workspace ws;
   for (auto _ : state) {
-    last = pathref::search::astar(m.grid, start, goal, CornerPolicy::strict, h);
+    last = reuse ? pathref::search::astar(ws, m.grid, start, goal, CornerPolicy::strict, h)
+                 : pathref::search::astar(m.grid, start, goal, CornerPolicy::strict, h);
     benchmark::DoNotOptimize(last.length);
   }
   state.counters["seed"] = static_cast<double>(m.seed);
@@ -81,9 +85,13 @@ void run(benchmark::State& state, Heuristic h) {
 void BM_AStarOctileStrict(benchmark::State& state) { run(state, Heuristic::octile); }
 void BM_AStarChebyshevStrict(benchmark::State& state) { run(state, Heuristic::chebyshev); }
 void BM_DijkstraStrict(benchmark::State& state) { run(state, Heuristic::zero); }
+void BM_AStarOctileStrictReused(benchmark::State& state) { run(state, Heuristic::octile, true); }
+void BM_DijkstraStrictReused(benchmark::State& state) { run(state, Heuristic::zero, true); }
 
 }  // namespace
 
 BENCHMARK(BM_AStarOctileStrict)->ArgName("blocked_pct")->Arg(20)->Arg(40)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_AStarChebyshevStrict)->ArgName("blocked_pct")->Arg(20)->Arg(40)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_DijkstraStrict)->ArgName("blocked_pct")->Arg(20)->Arg(40)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_AStarOctileStrictReused)->ArgName("blocked_pct")->Arg(20)->Arg(40)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_DijkstraStrictReused)->ArgName("blocked_pct")->Arg(20)->Arg(40)->Unit(benchmark::kMicrosecond);

@@ -3,10 +3,16 @@
 // Spec: spec/formats.md#cli-scen, spec/formats.md#movingai-scen, #scen-agreement.
 #include <fmt/core.h>
 
+#include <atomic>
+#include <chrono>
 #include <cstdint>
+#include <ctime>
+#include <exception>
 #include <filesystem>
 #include <map>
+#include <mutex>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -16,6 +22,7 @@
 #include "pathref/io/map_file.hpp"
 #include "pathref/io/movingai.hpp"
 #include "pathref/planners/planner.hpp"
+#include "pathref/planners/search.hpp"
 
 namespace pathref::cli {
 
@@ -29,6 +36,7 @@ struct ScenOptions {
   std::string algo = "astar";
   std::string every = "1";
   std::string digits = "6";
+  std::string jobs = "1";
   bool json = false;
   MapReadArgs read;
 };
@@ -74,7 +82,15 @@ struct ScenResult {
   bool found = false;
   double length = 0.0;
   bool agree = false;
+  double cpu_seconds = 0.0;  ///< CPU time of the thread running this scenario's planner call
 };
+
+/// CPU time of the calling thread, in seconds (CLOCK_THREAD_CPUTIME_ID: user + system).
+double thread_cpu_seconds() {
+  timespec ts{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+  return static_cast<double>(ts.tv_sec) + static_cast<double>(ts.tv_nsec) * 1e-9;
+}
 
 int run_scen(const ScenOptions& o) {
   const planners::Planner* planner = planners::find_planner(o.algo);
@@ -85,6 +101,7 @@ int run_scen(const ScenOptions& o) {
   }
   const auto every = parse_count(o.every, "--every", 1, 2147483647);
   const int digits = static_cast<int>(parse_count(o.digits, "--digits", 0, 17));
+  const auto jobs = static_cast<std::size_t>(parse_count(o.jobs, "--jobs", 1, 256));
   const io::MapReadOptions read = map_read_options(o.read);
   const std::string text = io::read_text_file(o.file, "scenario file");
   const io::ScenFile sf = io::parse_movingai_scen(text, o.file, read.limits);
@@ -103,26 +120,60 @@ int run_scen(const ScenOptions& o) {
     map_of.push_back(&it->second);
   }
 
-  std::vector<ScenResult> results;
-  for (std::size_t i = 0; i < sf.scenarios.size(); i += static_cast<std::size_t>(every)) {
-    const io::Scenario& s = sf.scenarios[i];
-    const grid::Grid& g = map_of[i]->map.grid;
-    planners::Request req;
-    req.grid = &g;
-    req.start = io::from_movingai(s.start_x.value, s.start_y.value, g.height());
-    req.goal = io::from_movingai(s.goal_x.value, s.goal_y.value, g.height());
-    req.policy = grid::CornerPolicy::strict;
-    req.seed = 1;
-    const planners::Result r = planner->run(req);
-    ScenResult res;
-    res.scenario = &s;
-    res.index = i + 1;
-    res.tolerance = io::agreement_tolerance(s.optimal, digits);
-    res.found = r.found;
-    res.length = r.found ? r.length : 0.0;
-    res.agree = r.found && io::lengths_agree(r.length, s.optimal, res.tolerance);
-    results.push_back(res);
+  // The scenarios to run, in file order; each result is stored at its own position, so the
+  // report does not depend on --jobs (each worker has its own search workspace, and a search's
+  // result does not depend on the workspace: spec/search.md "Reusing the search state").
+  std::vector<std::size_t> to_run;
+  for (std::size_t i = 0; i < sf.scenarios.size(); i += static_cast<std::size_t>(every)) to_run.push_back(i);
+  std::vector<ScenResult> results(to_run.size());
+  std::atomic<std::size_t> next{0};
+  std::exception_ptr failure;
+  std::mutex failure_mutex;
+  const auto worker = [&] {
+    search::Workspace workspace;
+    try {
+      for (std::size_t n = next++; n < to_run.size(); n = next++) {
+        const std::size_t i = to_run[n];
+        const io::Scenario& s = sf.scenarios[i];
+        const grid::Grid& g = map_of[i]->map.grid;
+        planners::Request req;
+        req.grid = &g;
+        req.start = io::from_movingai(s.start_x.value, s.start_y.value, g.height());
+        req.goal = io::from_movingai(s.goal_x.value, s.goal_y.value, g.height());
+        req.policy = grid::CornerPolicy::strict;
+        req.seed = 1;
+        req.workspace = &workspace;
+        const double t0 = thread_cpu_seconds();
+        const planners::Result r = planner->run(req);
+        const double t1 = thread_cpu_seconds();
+        ScenResult& res = results[n];
+        res.scenario = &s;
+        res.index = i + 1;
+        res.tolerance = io::agreement_tolerance(s.optimal, digits);
+        res.found = r.found;
+        res.length = r.found ? r.length : 0.0;
+        res.agree = r.found && io::lengths_agree(r.length, s.optimal, res.tolerance);
+        res.cpu_seconds = t1 - t0;
+      }
+    } catch (...) {
+      const std::lock_guard<std::mutex> lock(failure_mutex);
+      if (!failure) failure = std::current_exception();
+      next = to_run.size();  // the other workers stop after their current scenario
+    }
+  };
+  const auto wall0 = std::chrono::steady_clock::now();
+  if (jobs == 1) {
+    worker();
+  } else {
+    std::vector<std::thread> threads;
+    for (std::size_t t = 0; t < jobs; ++t) threads.emplace_back(worker);
+    for (auto& t : threads) t.join();
   }
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+  if (failure) std::rethrow_exception(failure);
+  double cpu = 0.0;
+  for (const auto& r : results) cpu += r.cpu_seconds;
+  const double per_query = results.empty() ? 0.0 : cpu / static_cast<double>(results.size());
   std::size_t agree = 0;
   for (const auto& r : results) agree += r.agree ? 1 : 0;
   const std::size_t differ = results.size() - agree;
@@ -138,6 +189,7 @@ int run_scen(const ScenOptions& o) {
     j["policy"] = "strict";
     j["every"] = every;
     j["writer_digits"] = digits;
+    j["jobs"] = jobs;
     j["coordinates"] = "movingai: (0,0) is the upper-left cell, x = column, y = row counted downwards";
     Json jm = Json::array();
     for (const auto& [key, m] : maps)
@@ -157,10 +209,16 @@ int run_scen(const ScenOptions& o) {
                     {"tolerance", r.tolerance},
                     {"found", r.found},
                     {"length", r.found ? Json(r.length) : Json(nullptr)},
-                    {"agree", r.agree}});
+                    {"agree", r.agree},
+                    {"cpu_seconds", r.cpu_seconds}});
     }
     j["scenarios"] = js;
     j["summary"] = {{"scenarios", sf.scenarios.size()}, {"run", results.size()}, {"agree", agree}, {"differ", differ}};
+    j["timing"] = {{"jobs", jobs},
+                   {"cpu_seconds", cpu},
+                   {"cpu_seconds_per_query", per_query},
+                   {"wall_seconds", wall},
+                   {"clock", "thread CPU time (user + system) of each planner call, summed; wall time of all runs"}};
     fmt::print("{}\n", j.dump(2));
   } else {
     fmt::print("pathref {} scen {}\n", PATHREF_VERSION, o.file);
@@ -184,6 +242,8 @@ int run_scen(const ScenOptions& o) {
     }
     fmt::print("summary: {} run, {} agree, {} differ ({} scenarios in the file, every {})\n", results.size(), agree,
                differ, sf.scenarios.size(), every);
+    fmt::print("time: {:.3f} ms CPU per query ({:.3f} s CPU in {} planner calls, {:.3f} s wall, --jobs {})\n",
+               per_query * 1e3, cpu, results.size(), wall, jobs);
   }
   return differ == 0 ? 0 : 1;
 }
@@ -210,6 +270,10 @@ void add_scen_command(CLI::App& app, Action& run) {
   cmd->add_option("--digits", o.digits,
                   "significant digits the file's writer printed before dropping trailing zeros (0: as printed)")
       ->type_name("P")
+      ->capture_default_str();
+  cmd->add_option("--jobs", o.jobs,
+                  "run the scenarios on N threads (1..256); the results and their order do not depend on N")
+      ->type_name("N")
       ->capture_default_str();
   cmd->add_flag("--json", o.json, "print one JSON object (format pathref-scen 1) instead of the report");
   add_map_read_options(cmd, o.read);

@@ -249,3 +249,103 @@ TEST_CASE("prop_order_is_a_strict_total_order", "[search][prop]") {
     if (search::precedes(a, b) && search::precedes(b, c)) RC_ASSERT(search::precedes(a, c));
   });
 }
+
+namespace {
+
+/// The normative procedure of search.astar written literally (OPEN as a list scanned for the key
+/// that precedes all others, CLOSED as a set, neighbours by grid::step_allowed in
+/// grid.neighbour-order), with the child counts of spec/search.md: the oracle for the library's
+/// optimised core (workspace, generation marks, heap, move masks).
+search::Outcome literal_search(const Grid& g, Cell start, Cell goal, CornerPolicy p, Heuristic h) {
+  const auto n = static_cast<std::size_t>(g.cell_count());
+  std::vector<double> gv(n, 0.0);
+  std::vector<std::int64_t> parent(n, -1);
+  std::vector<bool> open(n, false), closed(n, false), seen(n, false);
+  std::vector<std::int64_t> open_list{g.index(start)};
+  open[static_cast<std::size_t>(g.index(start))] = true;
+  seen[static_cast<std::size_t>(g.index(start))] = true;
+  search::Outcome out;
+  const auto key = [&](std::int64_t i) {
+    const double hv = heuristics::evaluate(h, g.cell(i), goal);
+    return search::OpenKey{gv[static_cast<std::size_t>(i)] + hv, hv, i};
+  };
+  while (!open_list.empty()) {
+    std::size_t best = 0;
+    for (std::size_t k = 1; k < open_list.size(); ++k)
+      if (search::precedes(key(open_list[k]), key(open_list[best]))) best = k;
+    const std::int64_t i = open_list[best];
+    open_list.erase(open_list.begin() + static_cast<std::ptrdiff_t>(best));
+    const auto ui = static_cast<std::size_t>(i);
+    open[ui] = false;
+    closed[ui] = true;
+    ++out.expansions;
+    if (i == g.index(goal)) {
+      out.found = true;
+      out.length = gv[ui];
+      for (std::int64_t j = i; j != -1; j = parent[static_cast<std::size_t>(j)]) out.path.push_back(g.cell(j));
+      std::reverse(out.path.begin(), out.path.end());
+      return out;
+    }
+    const Cell c = g.cell(i);
+    for (std::int64_t dy = -1; dy <= 1; ++dy) {
+      for (std::int64_t dx = -1; dx <= 1; ++dx) {
+        const Cell m{c.x + dx, c.y + dy};
+        if (!grid::step_allowed(g, c, m, p)) continue;
+        const auto mi = static_cast<std::size_t>(g.index(m));
+        if (closed[mi]) continue;
+        ++out.generated;
+        const double g_new = gv[ui] + grid::step_cost(c, m);
+        if (!open[mi] || g_new < gv[mi]) {
+          if (!seen[mi]) ++out.child_nodes;
+          seen[mi] = true;
+          gv[mi] = g_new;
+          parent[mi] = i;
+          if (!open[mi]) open_list.push_back(static_cast<std::int64_t>(mi));
+          open[mi] = true;
+        }
+      }
+    }
+  }
+  return out;
+}
+
+bool same_outcome(const search::Outcome& a, const search::Outcome& b) {
+  return a.found == b.found && a.path == b.path && a.length == b.length && a.expansions == b.expansions &&
+         a.generated == b.generated && a.child_nodes == b.child_nodes;
+}
+
+}  // namespace
+
+TEST_CASE("prop_search_is_the_literal_procedure", "[search][prop]") {
+  rc::prop("astar/dijkstra = search.astar's procedure written literally: path, length, counts", [] {
+    const Scenario sc = gen_scenario();
+    const auto h = *rc::gen::element(Heuristic::zero, Heuristic::manhattan, Heuristic::chebyshev,
+                                     Heuristic::octile, Heuristic::euclidean);
+    const auto want = literal_search(sc.g, sc.start, sc.goal, sc.policy, h);
+    RC_ASSERT(same_outcome(search::astar(sc.g, sc.start, sc.goal, sc.policy, h), want));
+    if (h == Heuristic::zero) RC_ASSERT(same_outcome(search::dijkstra(sc.g, sc.start, sc.goal, sc.policy), want));
+  });
+}
+
+TEST_CASE("prop_workspace_reuse_is_invisible", "[search][prop]") {
+  rc::prop("searches through one reused Workspace (maps of several sizes) = searches with fresh state", [] {
+    search::Workspace ws;
+    const int runs = *rc::gen::inRange(2, 6);
+    for (int r = 0; r < runs; ++r) {
+      const Scenario sc = gen_scenario();
+      const auto h = *rc::gen::element(Heuristic::zero, Heuristic::manhattan, Heuristic::chebyshev,
+                                       Heuristic::octile, Heuristic::euclidean);
+      RC_ASSERT(same_outcome(search::astar(ws, sc.g, sc.start, sc.goal, sc.policy, h),
+                             search::astar(sc.g, sc.start, sc.goal, sc.policy, h)));
+      RC_ASSERT(same_outcome(search::dijkstra(ws, sc.g, sc.start, sc.goal, sc.policy),
+                             search::dijkstra(sc.g, sc.start, sc.goal, sc.policy)));
+      search::ExpansionRule rule;
+      const std::uint8_t mask = *rc::gen::arbitrary<std::uint8_t>();
+      rule.moves = [mask](Cell) { return mask; };
+      rule.h = [&](Cell c) { return heuristics::octile(c, sc.goal); };
+      RC_ASSERT(same_outcome(search::best_first(ws, sc.g, sc.start, sc.goal, sc.policy, rule),
+                             search::best_first(sc.g, sc.start, sc.goal, sc.policy, rule)));
+    }
+    RC_ASSERT(ws.capacity() > 0);
+  });
+}

@@ -14,6 +14,10 @@
 
 #include "pathref/grid/grid.hpp"
 
+namespace pathref::search {
+class Workspace;  // search.hpp
+}  // namespace pathref::search
+
 namespace pathref::planners {
 
 using Json = nlohmann::json;
@@ -27,6 +31,11 @@ struct Request {
   /// Parameter overrides by name (from --set key=value); every planner validates its own and
   /// throws UsageError naming an unknown key.
   Json params = Json::object();
+  /// Optional reusable search state (not owned; one per thread) for the grid search planners
+  /// astar and dijkstra: with it they allocate nothing per call once it has grown to the grid;
+  /// results are the same with or without it (spec/search.md "Reusing the search state").
+  /// Other planners ignore it.
+  search::Workspace* workspace = nullptr;
 };
 
 struct Result {

@@ -9,9 +9,9 @@
 
 namespace pathref::search {
 
-namespace {
+namespace core {
 
-/// One heap entry: the key of a cell at the time it was put in OPEN. When a cell's g improves, a
+/// One open-list entry: the key of a cell at the time it was put in OPEN. When a cell's g improves, a
 /// new entry is pushed and the old one stays (lazy deletion). An old entry has a larger g, hence
 /// a key that does not precede the new one (f = fl(g + h) is monotone in g; h and index are the
 /// same), so the first entry of a cell to surface carries the cell's current key (or an equal
@@ -20,41 +20,152 @@ namespace {
 struct Entry {
   double f;
   double h;
-  std::int64_t index;
+  std::uint32_t index;  // cell index (W * H <= 2^28)
 };
 
-/// std::push_heap/pop_heap build a max-heap; "a is later than b" puts the first key on top.
-/// A function object (not a function pointer) so that the comparison is inlined.
-struct Later {
-  bool operator()(const Entry& a, const Entry& b) const noexcept {
-    return precedes(OpenKey{b.f, b.h, b.index}, OpenKey{a.f, a.h, a.index});
+/// a is selected before b: search.order (precedes) on (f, h, index).
+[[nodiscard]] inline bool first(const Entry& a, const Entry& b) noexcept {
+  if (a.f != b.f) return a.f < b.f;
+  if (a.h != b.h) return a.h < b.h;
+  return a.index < b.index;
+}
+
+/// The open list: an implicit d-ary min-heap under `first` (d = arity) over a vector the workspace
+/// keeps. Pops a minimal entry; search.order is total, so which heap pops it does not matter.
+constexpr std::size_t arity = 4;
+
+inline void heap_push(std::vector<Entry>& v, const Entry& e) {
+  v.push_back(e);
+  std::size_t i = v.size() - 1;
+  while (i > 0) {
+    const std::size_t p = (i - 1) / arity;
+    if (!first(e, v[p])) break;
+    v[i] = v[p];
+    i = p;
+  }
+  v[i] = e;
+}
+
+inline Entry heap_pop(std::vector<Entry>& v) {
+  const Entry top = v.front();
+  const Entry last = v.back();
+  v.pop_back();
+  const std::size_t n = v.size();
+  if (n == 0) return top;
+  std::size_t i = 0;
+  for (;;) {
+    const std::size_t c = arity * i + 1;
+    if (c >= n) break;
+    std::size_t best = c;
+    const std::size_t end = std::min(c + arity, n);
+    for (std::size_t j = c + 1; j < end; ++j)
+      if (first(v[j], v[best])) best = j;
+    if (!first(v[best], last)) break;
+    v[i] = v[best];
+    i = best;
+  }
+  v[i] = last;
+  return top;
+}
+
+/// Per-cell state, 16 bytes (one cache line holds four cells): g, parent index and a mark
+/// (generation << 2 | open / closed). A mark of another generation means "not looked at in this
+/// search": neither open nor closed, g and parent meaningless.
+struct CellState {
+  double g;
+  std::uint32_t parent;
+  std::uint32_t mark;
+};
+constexpr std::uint32_t mark_open = 1;
+constexpr std::uint32_t mark_closed = 2;
+constexpr std::uint32_t no_parent = 0xFFFFFFFFu;
+constexpr std::uint32_t max_generation = (std::uint32_t{1} << 30) - 1;
+
+}  // namespace core
+
+using core::CellState;
+using core::Entry;
+using core::first;
+using core::heap_pop;
+using core::heap_push;
+using core::mark_closed;
+using core::mark_open;
+using core::max_generation;
+using core::no_parent;
+
+struct Workspace::Impl {
+  std::vector<CellState> cells;
+  std::vector<Entry> heap;
+  std::uint32_t generation = 0;
+
+  /// Starts a search on `count` cells: grows the arrays if needed, then a new generation (every
+  /// mark of an earlier search becomes stale). On wrap-around of the generation counter (after
+  /// 2^30 - 1 searches) the marks are cleared once.
+  std::uint32_t begin(std::size_t count) {
+    if (cells.size() < count) {
+      cells.assign(count, CellState{0.0, no_parent, 0});
+      generation = 0;
+    }
+    if (generation == max_generation) {
+      for (CellState& c : cells) c.mark = 0;
+      generation = 0;
+    }
+    ++generation;
+    heap.clear();
+    return generation << 2;
   }
 };
 
-/// Per-cell state. `unknown` = not looked at yet; the grid is asked once whether the cell is
-/// free (Grid::free), and the answer is cached here together with the search state.
-enum : std::uint8_t { unknown = 0, blocked = 1, unseen = 2, open = 3, closed = 4 };
+Workspace::Workspace() : impl_(std::make_unique<Impl>()) {}
+Workspace::~Workspace() = default;
+Workspace::Workspace(Workspace&&) noexcept = default;
+Workspace& Workspace::operator=(Workspace&&) noexcept = default;
+std::size_t Workspace::capacity() const noexcept { return impl_ ? impl_->cells.size() : 0; }
+std::size_t Workspace::bytes() const noexcept {
+  return impl_ ? impl_->cells.capacity() * sizeof(CellState) + impl_->heap.capacity() * sizeof(Entry) : 0;
+}
+Workspace::Impl& access(Workspace& w) noexcept { return *w.impl_; }
 
-struct Offset {
-  std::int64_t dx;
-  std::int64_t dy;
-  double cost;  // grid::step_cost
-};
+namespace {
 
-/// The 8 moves in grid.neighbour-order with their costs from grid::step_cost.
-std::array<Offset, 8> offsets() {
-  std::array<Offset, 8> o{};
-  std::size_t k = 0;
-  for (std::int64_t dy = -1; dy <= 1; ++dy)
-    for (std::int64_t dx = -1; dx <= 1; ++dx)
-      if (dx != 0 || dy != 0)
-        o[k++] = Offset{dx, dy, grid::step_cost(grid::Cell{0, 0}, grid::Cell{dx, dy})};
-  return o;
+/// The 8 moves in grid.neighbour-order (bit k of a move mask = move k).
+constexpr std::array<std::int64_t, 8> move_dx{-1, 0, 1, -1, 1, -1, 0, 1};
+constexpr std::array<std::int64_t, 8> move_dy{-1, -1, -1, 0, 0, 1, 1, 1};
+constexpr std::uint32_t orthogonal_moves = 0b01011010;  // moves 1, 3, 4, 6
+
+/// The moves of `c` allowed under `policy` (bit k = grid::step_allowed(g, c, c + move k, policy)),
+/// for a free cell c: an orthogonal move needs its target free; a diagonal move its target free and
+/// the policy's condition on the two orthogonal cells it passes between (grid.corner-policy). Equal
+/// to step_allowed move by move (property prop_allowed_moves_is_step_allowed in tests).
+std::uint32_t allowed_moves(const grid::Grid& g, grid::Cell c, grid::CornerPolicy policy) noexcept {
+  std::uint32_t free = 0;
+  for (std::size_t k = 0; k < 8; ++k)
+    if (g.free(grid::Cell{c.x + move_dx[k], c.y + move_dy[k]})) free |= 1u << k;
+  std::uint32_t allowed = free & orthogonal_moves;
+  // Diagonal k and the orthogonal moves it passes between: 0:(3,1) 2:(4,1) 5:(3,6) 7:(4,6).
+  const auto side = [free](int k) { return (free >> k) & 1u; };
+  const std::uint32_t d0 = side(0), d2 = side(2), d5 = side(5), d7 = side(7);
+  const std::uint32_t s1 = side(1), s3 = side(3), s4 = side(4), s6 = side(6);
+  std::uint32_t pass0 = 0, pass2 = 0, pass5 = 0, pass7 = 0;
+  switch (policy) {
+    case grid::CornerPolicy::never: break;
+    case grid::CornerPolicy::strict:
+      pass0 = s3 & s1; pass2 = s4 & s1; pass5 = s3 & s6; pass7 = s4 & s6;
+      break;
+    case grid::CornerPolicy::one:
+      pass0 = s3 | s1; pass2 = s4 | s1; pass5 = s3 | s6; pass7 = s4 | s6;
+      break;
+    case grid::CornerPolicy::always:
+      pass0 = pass2 = pass5 = pass7 = 1;
+      break;
+  }
+  allowed |= (d0 & pass0) << 0 | (d2 & pass2) << 2 | (d5 & pass5) << 5 | (d7 & pass7) << 7;
+  return allowed;
 }
 
-/// The one best-first core. Rule: moves(cell) -> bitmask over `offsets()`, h(cell), f(g, h, cell).
+/// The one best-first core. Rule: moves(cell) -> bitmask over the 8 moves, h(cell), f(g, h, cell).
 template <class Rule>
-Outcome run_best_first(const grid::Grid& g, grid::Cell start, grid::Cell goal,
+Outcome run_best_first(Workspace::Impl& ws, const grid::Grid& g, grid::Cell start, grid::Cell goal,
                        grid::CornerPolicy policy, Rule& rule) {
   require(g.in_bounds(start), "search: start cell outside the grid");
   require(g.in_bounds(goal), "search: goal cell outside the grid");
@@ -62,103 +173,136 @@ Outcome run_best_first(const grid::Grid& g, grid::Cell start, grid::Cell goal,
   require(g.free(goal), "search: goal cell is blocked");
 
   const std::int64_t width = g.width();
-  const std::int64_t height = g.height();
-  const auto cells = static_cast<std::size_t>(g.cell_count());
-  const std::int64_t goal_index = g.index(goal);
-  const std::array<Offset, 8> moves = offsets();
-  std::vector<double> best_g(cells, std::numeric_limits<double>::infinity());
-  std::vector<std::int64_t> parent(cells, -1);
-  std::vector<std::uint8_t> state(cells, unknown);
-  std::vector<Entry> heap;
+  const std::uint32_t base = ws.begin(static_cast<std::size_t>(g.cell_count()));
+  const std::uint32_t is_open = base | mark_open;
+  const std::uint32_t is_closed = base | mark_closed;
+  CellState* const cells = ws.cells.data();
+  std::vector<Entry>& heap = ws.heap;
+  const auto goal_index = static_cast<std::uint32_t>(g.index(goal));
+  std::array<std::int64_t, 8> offset{};  // index difference of move k (grid.index)
+  std::array<double, 8> cost{};          // grid::step_cost of move k
+  for (std::size_t k = 0; k < 8; ++k) {
+    offset[k] = move_dy[k] * width + move_dx[k];
+    cost[k] = grid::step_cost(grid::Cell{0, 0}, grid::Cell{move_dx[k], move_dy[k]});
+  }
 
   Outcome out;
-  const std::int64_t start_index = g.index(start);
+  const auto start_index = static_cast<std::uint32_t>(g.index(start));
   const double h_start = rule.h(start);
-  best_g[static_cast<std::size_t>(start_index)] = 0.0;
-  state[static_cast<std::size_t>(start_index)] = open;
-  heap.push_back(Entry{rule.f(0.0, h_start, start), h_start, start_index});
+  cells[start_index] = CellState{0.0, no_parent, is_open};
+  heap_push(heap, Entry{rule.f(0.0, h_start, start), h_start, start_index});
 
   while (!heap.empty()) {
-    std::pop_heap(heap.begin(), heap.end(), Later{});
-    const Entry e = heap.back();
-    heap.pop_back();
-    const auto ei = static_cast<std::size_t>(e.index);
-    if (state[ei] == closed) continue;  // an older entry of a closed cell: not an expansion
-    state[ei] = closed;
+    const Entry e = heap_pop(heap);
+    CellState& here = cells[e.index];
+    if (here.mark == is_closed) continue;  // an older entry of a closed cell: not an expansion
+    here.mark = is_closed;
     ++out.expansions;
-    const double g_here = best_g[ei];
+    const double g_here = here.g;
 
     if (e.index == goal_index) {
       out.found = true;
       out.length = g_here;
-      for (std::int64_t i = e.index; i != -1; i = parent[static_cast<std::size_t>(i)])
-        out.path.push_back(g.cell(i));
+      for (std::uint32_t i = e.index; i != no_parent; i = cells[i].parent) out.path.push_back(g.cell(i));
       std::reverse(out.path.begin(), out.path.end());
       return out;
     }
 
-    const grid::Cell c = g.cell(e.index);
-    const std::uint8_t mask = rule.moves(c);
+    const grid::Cell c{static_cast<std::int64_t>(e.index) % width,
+                       static_cast<std::int64_t>(e.index) / width};
+    // Generated moves: the rule's, restricted to the allowed steps (in bounds, free, policy).
+    std::uint32_t todo = rule.moves(c) & allowed_moves(g, c, policy);
     // Canonical neighbour order (grid.neighbour-order); the order cannot change the result
     // (spec/search.md: each neighbour is relaxed once per expansion, independently).
-    for (std::size_t k = 0; k < moves.size(); ++k) {
-      if ((mask & (1u << k)) == 0) continue;  // not generated by the expansion rule
-      const Offset& mv = moves[k];
-      const grid::Cell m{c.x + mv.dx, c.y + mv.dy};
-      if (m.x < 0 || m.y < 0 || m.x >= width || m.y >= height) continue;
-      const std::int64_t mi = m.y * width + m.x;  // grid.index
-      const auto ui = static_cast<std::size_t>(mi);
-      if (state[ui] == unknown) state[ui] = g.free(m) ? unseen : blocked;
-      if (state[ui] == blocked || state[ui] == closed) continue;  // closed: no reopening
-      // c and m are free: an orthogonal step is allowed under every policy; a diagonal one
-      // depends on the policy and the two cells it passes between (grid.corner-policy).
-      if (mv.dx != 0 && mv.dy != 0 && !grid::step_allowed(g, c, m, policy)) continue;
+    while (todo != 0) {
+      const auto k = static_cast<std::size_t>(__builtin_ctz(todo));
+      todo &= todo - 1;
+      const auto mi = static_cast<std::uint32_t>(static_cast<std::int64_t>(e.index) + offset[k]);
+      CellState& next = cells[mi];
+      if (next.mark == is_closed) continue;  // no reopening
       ++out.generated;  // a child generation (spec/search.md "child counts")
-      const double g_new = g_here + mv.cost;
-      if (state[ui] == unseen || g_new < best_g[ui]) {  // parent changes on strictly smaller g
-        if (state[ui] == unseen) ++out.child_nodes;  // a new child node (spec/search.md "child counts")
-        best_g[ui] = g_new;
-        parent[ui] = e.index;
-        state[ui] = open;
+      const double g_new = g_here + cost[k];
+      const bool fresh = next.mark != is_open;
+      if (fresh || g_new < next.g) {  // parent changes on strictly smaller g
+        if (fresh) ++out.child_nodes;  // a new child node (spec/search.md "child counts")
+        next = CellState{g_new, e.index, is_open};
+        const grid::Cell m{c.x + move_dx[k], c.y + move_dy[k]};
         const double h_m = rule.h(m);
-        heap.push_back(Entry{rule.f(g_new, h_m, m), h_m, mi});
-        std::push_heap(heap.begin(), heap.end(), Later{});
+        heap_push(heap, Entry{rule.f(g_new, h_m, m), h_m, mi});
       }
     }
   }
   return out;  // OPEN exhausted: goal unreachable
 }
 
-/// astar's rule: every move, h from the heuristic, f = g + h (one addition).
+/// astar's rule: every move, h from the heuristic H (fixed at compile time), f = g + h.
+template <heuristics::Heuristic H>
 struct PlainRule {
-  heuristics::Heuristic heuristic;
   grid::Cell goal;
-  std::uint8_t moves(grid::Cell) const noexcept { return 0xFF; }
-  double h(grid::Cell n) const { return heuristics::evaluate(heuristic, n, goal); }
-  double f(double g, double h_n, grid::Cell) const noexcept { return g + h_n; }
+  static constexpr std::uint32_t moves(grid::Cell) noexcept { return 0xFF; }
+  double h(grid::Cell n) const {
+    if constexpr (H == heuristics::Heuristic::octile) return heuristics::octile(n, goal);
+    else if constexpr (H == heuristics::Heuristic::zero) return 0.0;  // n, goal in the grid: in the domain
+    else return heuristics::evaluate(H, n, goal);
+  }
+  static double f(double g, double h_n, grid::Cell) noexcept { return g + h_n; }
 };
+
+template <heuristics::Heuristic H>
+Outcome run_plain(Workspace::Impl& ws, const grid::Grid& g, grid::Cell start, grid::Cell goal,
+                  grid::CornerPolicy policy) {
+  PlainRule<H> rule{goal};
+  return run_best_first(ws, g, start, goal, policy, rule);
+}
 
 /// A user rule behind std::function.
 struct FunctionRule {
   const ExpansionRule& r;
-  std::uint8_t moves(grid::Cell c) const { return r.moves ? r.moves(c) : std::uint8_t{0xFF}; }
+  std::uint32_t moves(grid::Cell c) const { return r.moves ? r.moves(c) : std::uint8_t{0xFF}; }
   double h(grid::Cell n) const { return r.h(n); }
   double f(double g, double h_n, grid::Cell n) const { return r.f ? r.f(g, h_n, n) : g + h_n; }
 };
 
 }  // namespace
 
+Outcome astar(Workspace& ws, const grid::Grid& g, grid::Cell start, grid::Cell goal,
+              grid::CornerPolicy policy, heuristics::Heuristic h) {
+  Workspace::Impl& w = access(ws);
+  switch (h) {
+    case heuristics::Heuristic::zero: return run_plain<heuristics::Heuristic::zero>(w, g, start, goal, policy);
+    case heuristics::Heuristic::manhattan:
+      return run_plain<heuristics::Heuristic::manhattan>(w, g, start, goal, policy);
+    case heuristics::Heuristic::chebyshev:
+      return run_plain<heuristics::Heuristic::chebyshev>(w, g, start, goal, policy);
+    case heuristics::Heuristic::octile: return run_plain<heuristics::Heuristic::octile>(w, g, start, goal, policy);
+    case heuristics::Heuristic::euclidean:
+      return run_plain<heuristics::Heuristic::euclidean>(w, g, start, goal, policy);
+  }
+  throw UsageError("unknown heuristic");
+}
+
 Outcome astar(const grid::Grid& g, grid::Cell start, grid::Cell goal, grid::CornerPolicy policy,
               heuristics::Heuristic h) {
-  PlainRule rule{h, goal};
-  return run_best_first(g, start, goal, policy, rule);
+  Workspace ws;
+  return astar(ws, g, start, goal, policy, h);
+}
+
+Outcome best_first(Workspace& ws, const grid::Grid& g, grid::Cell start, grid::Cell goal,
+                   grid::CornerPolicy policy, const ExpansionRule& rule) {
+  if (!rule.h) throw UsageError("best_first: the expansion rule needs a heuristic h");
+  FunctionRule fr{rule};
+  return run_best_first(access(ws), g, start, goal, policy, fr);
 }
 
 Outcome best_first(const grid::Grid& g, grid::Cell start, grid::Cell goal,
                    grid::CornerPolicy policy, const ExpansionRule& rule) {
-  if (!rule.h) throw UsageError("best_first: the expansion rule needs a heuristic h");
-  FunctionRule fr{rule};
-  return run_best_first(g, start, goal, policy, fr);
+  Workspace ws;
+  return best_first(ws, g, start, goal, policy, rule);
+}
+
+Outcome dijkstra(Workspace& ws, const grid::Grid& g, grid::Cell start, grid::Cell goal,
+                 grid::CornerPolicy policy) {
+  return astar(ws, g, start, goal, policy, heuristics::Heuristic::zero);
 }
 
 Outcome dijkstra(const grid::Grid& g, grid::Cell start, grid::Cell goal, grid::CornerPolicy policy) {
@@ -218,8 +362,10 @@ Planner make_astar_planner() {
     const auto h = heuristics::parse_heuristic(params.at("heuristic").get<std::string>());
     Json extra = {{"admissible", heuristics::admissible(h, req.policy)},
                   {"consistent", heuristics::consistent(h, req.policy)}};
-    return to_result(search::astar(g, req.start, req.goal, req.policy, h), std::move(params),
-                     std::move(extra));
+    search::Outcome o = req.workspace != nullptr
+                            ? search::astar(*req.workspace, g, req.start, req.goal, req.policy, h)
+                            : search::astar(g, req.start, req.goal, req.policy, h);
+    return to_result(std::move(o), std::move(params), std::move(extra));
   };
   return p;
 }
@@ -232,8 +378,10 @@ Planner make_dijkstra_planner() {
   p.run = [defaults = p.defaults](const Request& req) {
     const grid::Grid& g = grid_of(req);
     Json params = merge_params(defaults, req.params);
-    return to_result(search::dijkstra(g, req.start, req.goal, req.policy), std::move(params),
-                     Json::object());
+    search::Outcome o = req.workspace != nullptr
+                            ? search::dijkstra(*req.workspace, g, req.start, req.goal, req.policy)
+                            : search::dijkstra(g, req.start, req.goal, req.policy);
+    return to_result(std::move(o), std::move(params), Json::object());
   };
   return p;
 }

@@ -10,6 +10,7 @@
 /// Spec: spec/search.md (search.order, search.astar, search.dijkstra)
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -54,6 +55,32 @@ struct Outcome {
   std::int64_t child_nodes = 0;
 };
 
+/// Reusable search state (spec/search.md "Reusing the search state"): per-cell g, parent and a
+/// generation-stamped open/closed mark, sized once to the largest grid searched and never cleared
+/// between searches (a new search increments the generation, which makes every old mark stale),
+/// plus the open list's storage. A Workspace carries no result from one search to the next: a
+/// search with a reused Workspace returns exactly what the same search with a fresh one returns
+/// (property prop_workspace_reuse_is_invisible). It is not tied to one grid. Not thread-safe: one
+/// Workspace per thread. Source: pathref. Spec: search.astar
+class Workspace {
+ public:
+  Workspace();
+  ~Workspace();
+  Workspace(Workspace&&) noexcept;
+  Workspace& operator=(Workspace&&) noexcept;
+  Workspace(const Workspace&) = delete;
+  Workspace& operator=(const Workspace&) = delete;
+  /// Cells the per-cell arrays currently hold (0 before the first search).
+  [[nodiscard]] std::size_t capacity() const noexcept;
+  /// Bytes the workspace holds (per-cell arrays and open-list storage), for reports.
+  [[nodiscard]] std::size_t bytes() const noexcept;
+  struct Impl;
+
+ private:
+  std::unique_ptr<Impl> impl_;
+  friend Impl& access(Workspace& w) noexcept;
+};
+
 /// A* from start to goal under `policy` with heuristic `h` (spec rule search.astar).
 /// Source: Hart, Nilsson & Raphael (1968), doi:10.1109/TSSC.1968.300136; Han (IJACSA) Eq. (8).
 /// Spec: search.astar, search.order
@@ -64,6 +91,10 @@ struct Outcome {
 ///   policy its cost is at most sqrt2 times the shortest.
 /// Golden: golden/search/search.astar.json
 [[nodiscard]] Outcome astar(const grid::Grid& g, grid::Cell start, grid::Cell goal,
+                            grid::CornerPolicy policy, heuristics::Heuristic h);
+/// astar with a reused Workspace: the same Outcome, bit for bit, without per-call allocation
+/// once `ws` has grown to the grid's size. Spec: search.astar
+[[nodiscard]] Outcome astar(Workspace& ws, const grid::Grid& g, grid::Cell start, grid::Cell goal,
                             grid::CornerPolicy policy, heuristics::Heuristic h);
 
 /// A node-expansion rule for the one best-first core (spec/search.md "Expansion rules and child
@@ -91,6 +122,10 @@ struct ExpansionRule {
 /// and f = g + h with h = heuristics::evaluate(H) (identical path and counts).
 [[nodiscard]] Outcome best_first(const grid::Grid& g, grid::Cell start, grid::Cell goal,
                                  grid::CornerPolicy policy, const ExpansionRule& rule);
+/// best_first with a reused Workspace (same Outcome). Spec: search.astar
+[[nodiscard]] Outcome best_first(Workspace& ws, const grid::Grid& g, grid::Cell start,
+                                 grid::Cell goal, grid::CornerPolicy policy,
+                                 const ExpansionRule& rule);
 
 /// Dijkstra's algorithm: exactly astar(..., Heuristic::zero), key (g, 0, index).
 /// Source: Dijkstra (1959), doi:10.1007/BF01386390.
@@ -98,6 +133,9 @@ struct ExpansionRule {
 /// Golden: golden/search/search.dijkstra.json
 [[nodiscard]] Outcome dijkstra(const grid::Grid& g, grid::Cell start, grid::Cell goal,
                                grid::CornerPolicy policy);
+/// dijkstra with a reused Workspace (same Outcome). Spec: search.dijkstra
+[[nodiscard]] Outcome dijkstra(Workspace& ws, const grid::Grid& g, grid::Cell start,
+                               grid::Cell goal, grid::CornerPolicy policy);
 
 /// Number of orthogonal and diagonal steps of a path (its exact cost is orthogonal +
 /// diagonal * sqrt(2)). Source: pathref. Spec: search.astar (output "steps").
