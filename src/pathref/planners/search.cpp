@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cstdlib>
 #include <limits>
 
@@ -18,16 +19,27 @@ namespace core {
 /// one): expanding the cell then with its current g is exactly the selection of spec/search.md,
 /// and every later entry of the cell finds it closed and is skipped (not an expansion).
 struct Entry {
-  double f;
-  double h;
+  std::uint64_t f;      // order_bits(f)
+  std::uint64_t h;      // order_bits(h)
   std::uint32_t index;  // cell index (W * H <= 2^28)
 };
 
-/// a is selected before b: search.order (precedes) on (f, h, index).
+/// An unsigned integer whose order is the order of the doubles (for every non-NaN double, with
+/// -0 mapped to +0, which compare equal as doubles): the sign-magnitude bits turned into an
+/// offset binary. Exact: a < b as doubles iff order_bits(a) < order_bits(b), a == b iff equal.
+[[nodiscard]] inline std::uint64_t order_bits(double x) noexcept {
+  const auto b = std::bit_cast<std::uint64_t>(x + 0.0);  // -0 + 0 = +0; any other x unchanged
+  return (b >> 63) != 0 ? ~b : b | (std::uint64_t{1} << 63);
+}
+
+__extension__ using u128 = unsigned __int128;  // GCC / Clang
+
+/// a is selected before b: search.order (precedes) on (f, h, index), as one 128-bit comparison of
+/// (f, h) followed by the index.
 [[nodiscard]] inline bool first(const Entry& a, const Entry& b) noexcept {
-  if (a.f != b.f) return a.f < b.f;
-  if (a.h != b.h) return a.h < b.h;
-  return a.index < b.index;
+  const u128 ka = (static_cast<u128>(a.f) << 64) | a.h;
+  const u128 kb = (static_cast<u128>(b.f) << 64) | b.h;
+  return ka < kb || (ka == kb && a.index < b.index);
 }
 
 /// The open list: an implicit d-ary min-heap under `first` (d = arity) over a vector the workspace
@@ -86,6 +98,7 @@ constexpr std::uint32_t max_generation = (std::uint32_t{1} << 30) - 1;
 using core::CellState;
 using core::Entry;
 using core::first;
+using core::order_bits;
 using core::heap_pop;
 using core::heap_push;
 using core::mark_closed;
@@ -190,7 +203,7 @@ Outcome run_best_first(Workspace::Impl& ws, const grid::Grid& g, grid::Cell star
   const auto start_index = static_cast<std::uint32_t>(g.index(start));
   const double h_start = rule.h(start);
   cells[start_index] = CellState{0.0, no_parent, is_open};
-  heap_push(heap, Entry{rule.f(0.0, h_start, start), h_start, start_index});
+  heap_push(heap, Entry{order_bits(rule.f(0.0, h_start, start)), order_bits(h_start), start_index});
 
   while (!heap.empty()) {
     const Entry e = heap_pop(heap);
@@ -228,7 +241,7 @@ Outcome run_best_first(Workspace::Impl& ws, const grid::Grid& g, grid::Cell star
         next = CellState{g_new, e.index, is_open};
         const grid::Cell m{c.x + move_dx[k], c.y + move_dy[k]};
         const double h_m = rule.h(m);
-        heap_push(heap, Entry{rule.f(g_new, h_m, m), h_m, mi});
+        heap_push(heap, Entry{order_bits(rule.f(g_new, h_m, m)), order_bits(h_m), mi});
       }
     }
   }
