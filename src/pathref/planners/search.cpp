@@ -108,7 +108,8 @@ using core::no_parent;
 
 struct Workspace::Impl {
   std::vector<CellState> cells;
-  std::vector<Entry> heap;
+  std::vector<Entry> heap;    // entries whose f differs from that of the last popped entry
+  std::vector<Entry> bucket;  // entries pushed with f equal to that of the last popped entry
   std::uint32_t generation = 0;
 
   /// Starts a search on `count` cells: grows the arrays if needed, then a new generation (every
@@ -125,6 +126,7 @@ struct Workspace::Impl {
     }
     ++generation;
     heap.clear();
+    bucket.clear();
     return generation << 2;
   }
 };
@@ -135,7 +137,9 @@ Workspace::Workspace(Workspace&&) noexcept = default;
 Workspace& Workspace::operator=(Workspace&&) noexcept = default;
 std::size_t Workspace::capacity() const noexcept { return impl_ ? impl_->cells.size() : 0; }
 std::size_t Workspace::bytes() const noexcept {
-  return impl_ ? impl_->cells.capacity() * sizeof(CellState) + impl_->heap.capacity() * sizeof(Entry) : 0;
+  return impl_ ? impl_->cells.capacity() * sizeof(CellState) +
+                     (impl_->heap.capacity() + impl_->bucket.capacity()) * sizeof(Entry)
+               : 0;
 }
 Workspace::Impl& access(Workspace& w) noexcept { return *w.impl_; }
 
@@ -190,7 +194,13 @@ Outcome run_best_first(Workspace::Impl& ws, const grid::Grid& g, grid::Cell star
   const std::uint32_t is_open = base | mark_open;
   const std::uint32_t is_closed = base | mark_closed;
   CellState* const cells = ws.cells.data();
+  // The open list is two heaps, a partition of the entries: `bucket` receives the entries pushed
+  // with the f of the last popped entry (on grids most children keep their parent's f), `heap` the
+  // others. A pop takes the first of the two tops under search.order, i.e. the first entry of the
+  // union, so the partition never changes which entry is popped.
   std::vector<Entry>& heap = ws.heap;
+  std::vector<Entry>& bucket = ws.bucket;
+  std::uint64_t f_last = 0;
   const auto goal_index = static_cast<std::uint32_t>(g.index(goal));
   std::array<std::int64_t, 8> offset{};  // index difference of move k (grid.index)
   std::array<double, 8> cost{};          // grid::step_cost of move k
@@ -205,8 +215,10 @@ Outcome run_best_first(Workspace::Impl& ws, const grid::Grid& g, grid::Cell star
   cells[start_index] = CellState{0.0, no_parent, is_open};
   heap_push(heap, Entry{order_bits(rule.f(0.0, h_start, start)), order_bits(h_start), start_index});
 
-  while (!heap.empty()) {
-    const Entry e = heap_pop(heap);
+  while (!heap.empty() || !bucket.empty()) {
+    const Entry e = (bucket.empty() || (!heap.empty() && first(heap.front(), bucket.front()))) ? heap_pop(heap)
+                                                                                               : heap_pop(bucket);
+    f_last = e.f;
     CellState& here = cells[e.index];
     if (here.mark == is_closed) continue;  // an older entry of a closed cell: not an expansion
     here.mark = is_closed;
@@ -241,7 +253,8 @@ Outcome run_best_first(Workspace::Impl& ws, const grid::Grid& g, grid::Cell star
         next = CellState{g_new, e.index, is_open};
         const grid::Cell m{c.x + move_dx[k], c.y + move_dy[k]};
         const double h_m = rule.h(m);
-        heap_push(heap, Entry{order_bits(rule.f(g_new, h_m, m)), order_bits(h_m), mi});
+        const Entry child{order_bits(rule.f(g_new, h_m, m)), order_bits(h_m), mi};
+        heap_push(child.f == f_last ? bucket : heap, child);
       }
     }
   }
