@@ -1184,7 +1184,7 @@ std::string sensors2023_markdown(const Json& doc, const std::string& figure_dir,
   // why runs fail (spec "Reproduction", "Why runs stall"): outcomes of the runs that did not reach
   // the goal, and how many of the stalled ones ended standing still (v = w = 0: a DWA local minimum)
   md += "Runs that did not reach the goal, first n maps (stalled = moved < 0.1 m in 10 s; *standing* = the last commanded "
-        "v and ω are both 0, the DWA's own choice among valid candidates: a local minimum of Eq. 13, see spec/sensors2023-dwa.md "
+        "v and ω are the window's zero sample (below half a resolution), the DWA's own choice among valid candidates: a local minimum of Eq. 13, see spec/sensors2023-dwa.md "
         "\"Why runs stall\"):\n\n| condition | arm | not reached | stalled | of which standing | collided | timed out |\n|---|---|---|---|---|---|---|\n";
   for (const std::string cond : {"static", "dynamic", "mixed"})
     for (const Json& a : doc.at("arms")) {
@@ -1200,7 +1200,13 @@ std::string sensors2023_markdown(const Json& doc, const std::string& figure_dir,
         if (o == "reached") continue;
         ++nr;
         st += o == "stalled" ? 1 : 0;
-        standing += o == "stalled" && r.at("end_v").get<double>() == 0.0 && r.at("end_w").get<double>() == 0.0 ? 1 : 0;
+        // the window's zero sample: |v| and |w| below half a resolution (w's zero sample carries the
+        // rounding of lo + k r, ~1e-14)
+        const Json& dp = doc.at("parameters").at("dwa");
+        standing += o == "stalled" && std::abs(r.at("end_v").get<double>()) < 0.5 * dp.at("v_res").get<double>() &&
+                            std::abs(r.at("end_w").get<double>()) < 0.5 * dp.at("w_res").get<double>()
+                        ? 1
+                        : 0;
         co += o == "collided" ? 1 : 0;
         to += o == "timed_out" ? 1 : 0;
       }
