@@ -44,10 +44,7 @@ int run_convert(const ConvertOptions& o) {
   if (o.output.empty() || o.output == "-") {
     fmt::print("{}", text);
   } else {
-    std::ofstream out(o.output, std::ios::binary);
-    out << text;
-    out.close();
-    if (!out) throw UsageError("cannot write '" + o.output + "'");
+    write_output_file(o.output, text);
   }
   if (to != io::OutputFormat::pathref_grid && (m.start || m.goal || !m.name.empty()))
     fmt::print(stderr, "pathref: note: the {} format has no start, goal or name; they were not written\n", o.to);

@@ -16,6 +16,7 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
+#include "pathref/io/json_text.hpp"
 #include "pathref/core/error.hpp"
 #include "pathref/grid/json_codec.hpp"
 #include "pathref/io/svg.hpp"
@@ -46,20 +47,6 @@ struct DriveOptions {
   std::optional<double> half_track;  // default: ly
   double yaw_rate_max = std::numeric_limits<double>::infinity();
 };
-
-/// 1-based line and column of byte offset `pos` in `text`.
-std::pair<std::size_t, std::size_t> line_col(const std::string& text, std::size_t pos) {
-  std::size_t line = 1, col = 1;
-  for (std::size_t i = 0; i < pos && i < text.size(); ++i) {
-    if (text[i] == '\n') {
-      ++line;
-      col = 1;
-    } else {
-      ++col;
-    }
-  }
-  return {line, col};
-}
 
 /// A path from JSON: an object with "path" (e.g. `pathref plan --json`) or a bare array of
 /// [x, y]. nullopt when the object says found = false or holds no path (a plan that found none).
@@ -119,14 +106,7 @@ std::optional<std::vector<grid::Cell>> read_path(const std::string& text, const 
   if (first == std::string::npos)
     throw UsageError(source + " is empty: give --path FILE or pipe `pathref plan --json` into drive");
   if (text[first] == '{' || text[first] == '[') {
-    Json doc;
-    try {
-      doc = Json::parse(text);
-    } catch (const Json::parse_error& e) {
-      const auto [line, col] = line_col(text, e.byte > 0 ? e.byte - 1 : 0);
-      throw ParseError(source, line, col, std::string("invalid JSON: ") + e.what());
-    }
-    return path_from_doc(doc, source);
+    return path_from_doc(io::parse_json_text(text, source), source);
   }
   auto path = path_from_text(text, source);
   if (path.empty()) return std::nullopt;
@@ -293,10 +273,7 @@ int run_drive(const DriveOptions& o) {
   else
     print_report(o, p, pt, ks, path->size());
   if (!o.svg_file.empty()) {
-    std::ofstream out(o.svg_file, std::ios::binary);
-    if (!out) throw UsageError("cannot write " + o.svg_file);
-    out << profile_svg(pt, ks);
-    if (!out) throw UsageError("cannot write " + o.svg_file);
+    write_output_file(o.svg_file, profile_svg(pt, ks));
     if (!o.json) fmt::print("wrote {}\n", o.svg_file);
   }
   return 0;

@@ -22,25 +22,64 @@ rules::Json parse_assignments(const std::vector<std::string>& assignments) {
       throw UsageError("expected key=value, got '" + a + "'");
     const std::string key = a.substr(0, eq);
     const std::string text = a.substr(eq + 1);
+    if (input.contains(key)) throw UsageError("input '" + key + "' given more than once");
     rules::Json value = rules::Json::parse(text, nullptr, /*allow_exceptions=*/false);
     input[key] = value.is_discarded() ? rules::Json(text) : value;
   }
   return input;
 }
 
+/// UsageError when `input` has a key that is not one of the rule's inputs (spec/cli.md#eval):
+/// a misspelt key must never be ignored in favour of the default.
+void reject_unknown_inputs(const rules::Rule& rule, const rules::Json& input) {
+  for (const auto& [key, value] : input.items()) {
+    bool known = false;
+    for (const auto& f : rule.inputs) known = known || f.name == key;
+    if (known) continue;
+    std::string names;
+    for (const auto& f : rule.inputs) names += (names.empty() ? "" : ", ") + f.name;
+    throw UsageError("rule " + rule.id + " has no input '" + key + "' (its inputs: " +
+                     (names.empty() ? std::string("none") : names) + ")");
+  }
+}
+
+rules::Json fields_json(const std::vector<rules::Field>& fields) {
+  rules::Json a = rules::Json::array();
+  for (const auto& f : fields) a.push_back({{"name", f.name}, {"type", f.type}, {"doc", f.doc}});
+  return a;
+}
+
 }  // namespace
+
+rules::Json rule_list_json() {
+  rules::Json list = rules::Json::array();
+  for (const auto& r : rules::registry().all())
+    list.push_back({{"id", r.id},
+                    {"summary", r.summary},
+                    {"function", r.function},
+                    {"inputs", fields_json(r.inputs)},
+                    {"outputs", fields_json(r.outputs)}});
+  return {{"format", "pathref-rules"}, {"format_version", 1}, {"pathref_version", PATHREF_VERSION}, {"rules", list}};
+}
 
 void add_eval_command(CLI::App& app, Action& run) {
   auto* cmd = app.add_subcommand("eval", "Evaluate one spec rule at the given inputs; prints JSON");
   static std::string rule_id;
   static std::vector<std::string> assignments;
   static bool list = false;
+  static bool json = false;
   cmd->add_flag("--list", list, "List every rule with its inputs and outputs");
+  cmd->add_flag("--json", json, "with --list: print the list as one JSON object (spec/cli.md#eval)");
   cmd->add_option("rule", rule_id, "Rule id, e.g. grid.coord");
   cmd->add_option("inputs", assignments, "key=value inputs (values are JSON or plain strings)");
   cmd->callback([&run] {
     run = [] {
       const auto& reg = rules::registry();
+      if (json && !list) throw UsageError("--json goes with --list (pathref eval always prints JSON)");
+      if (list && json) {
+        fmt::print("{}\n", rule_list_json().dump(2));
+        return 0;
+      }
       if (list) {
         for (const auto& r : reg.all()) {
           fmt::print("{}  {}\n", r.id, r.summary);
@@ -54,6 +93,7 @@ void add_eval_command(CLI::App& app, Action& run) {
       if (rule == nullptr)
         throw UsageError("unknown rule '" + rule_id + "' (see pathref eval --list)");
       const rules::Json input = parse_assignments(assignments);
+      reject_unknown_inputs(*rule, input);
       const rules::Json out = rule->eval(input);
       fmt::print("{}\n", rules::Json{{"rule", rule->id}, {"input", input}, {"output", out}}.dump(2));
       return 0;

@@ -1,4 +1,4 @@
-// `pathref inflate SCENE.json [--out FILE] [--svg FILE]` (spec/inflation.md#cli): reads a polygon
+// `pathref inflate SCENE.json [-o FILE] [--svg FILE]` (spec/inflation.md#cli): reads a polygon
 // scene, inflates its obstacles exactly (inflation.scene) and writes the grid map as
 // pathref-grid 1 text (stdout without --out), ready for `pathref plan --map FILE`.
 #include <fmt/core.h>
@@ -15,15 +15,6 @@
 
 namespace pathref::cli {
 
-namespace {
-void write_file(const std::string& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary);
-  out << text;
-  out.close();
-  if (!out) throw UsageError("cannot write '" + path + "'");
-}
-}  // namespace
-
 void add_inflate_command(CLI::App& app, Action& run) {
   auto* cmd = app.add_subcommand(
       "inflate",
@@ -31,7 +22,9 @@ void add_inflate_command(CLI::App& app, Action& run) {
       "grid map (pathref-grid 1)");
   static std::string scene_path, out_path, svg_path;
   cmd->add_option("scene", scene_path, "scene file (JSON, spec/formats.md#polygon-scene-json)")->required();
-  cmd->add_option("--out", out_path, "write the grid map here instead of stdout");
+  cmd->add_option("-o,--output,--out", out_path,
+                  "write the grid map to FILE instead of stdout (-o/--output as in convert; --out kept as an alias)")
+      ->type_name("FILE");
   cmd->add_option("--svg", svg_path, "also write an SVG figure of the inflated map");
   cmd->callback([&run] {
     run = [] {
@@ -42,14 +35,14 @@ void add_inflate_command(CLI::App& app, Action& run) {
       if (out_path.empty()) {
         fmt::print("{}", text);
       } else {
-        write_file(out_path, text);
+        write_output_file(out_path, text);
       }
       if (!svg_path.empty()) {
         const std::string title = fmt::format(
             "{} inflated by r = {} + {} ({} of {} cells blocked)",
             scene.name.empty() ? std::string("scene") : scene.name, geometry::to_string(scene.radius),
             geometry::to_string(scene.margin), inf.grid.blocked_count(), inf.grid.cell_count());
-        write_file(svg_path, io::svg_map(inf.grid, inf.start, inf.goal, {}, title));
+        write_output_file(svg_path, io::svg_map(inf.grid, inf.start, inf.goal, {}, title));
       }
       return 0;
     };

@@ -13,6 +13,8 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
+#include "pathref/io/json_text.hpp"
+#include "pathref/io/map_file.hpp"
 #include "pathref/core/error.hpp"
 #include "pathref/ml/classifier.hpp"
 #include "pathref/ml/folds.hpp"
@@ -112,13 +114,6 @@ bool tie_flag(const Model& m, std::span<const double> x) {
   return false;
 }
 
-void write_text(const std::string& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary);
-  out << text;
-  out.close();
-  if (!out) throw UsageError("cannot write '" + path + "'");
-}
-
 int run_learn(const LearnOptions& o) {
   if (o.cv.empty() == o.holdout.empty()) throw UsageError("give exactly one of --cv K and --holdout FRACTION");
   const std::uint32_t seed = parse_seed(o.seed);
@@ -195,7 +190,7 @@ int run_learn(const LearnOptions& o) {
         if (folds[i] != test_id) train_rows.push_back(i);
       const Model m = train(kind, subset(d, train_rows), params);
       if (const auto* t = std::get_if<Tree>(&m.model)) tied_nodes += t->tied_splits;
-      if (!o.save_model.empty() && f == 0 && o.cv.empty()) write_text(o.save_model, to_json(m).dump() + "\n");
+      if (!o.save_model.empty() && f == 0 && o.cv.empty()) write_output_file(o.save_model, to_json(m).dump() + "\n");
       for (std::size_t i = 0; i < d.rows(); ++i)
         if (folds[i] == test_id) {
           pred[i] = predict(m, d.row(i));
@@ -219,24 +214,15 @@ int run_learn(const LearnOptions& o) {
   }
   if (!o.save_model.empty() && !o.cv.empty()) {
     // with --cv the saved model is trained on every row (the last classifier given)
-    write_text(o.save_model, to_json(train(kinds.back(), d, params)).dump() + "\n");
+    write_output_file(o.save_model, to_json(train(kinds.back(), d, params)).dump() + "\n");
   }
-  if (!o.predictions.empty()) write_text(o.predictions, preds.dump() + "\n");
+  if (!o.predictions.empty()) write_output_file(o.predictions, preds.dump() + "\n");
   if (o.json) fmt::print("{}\n", doc.dump(1));
   return 0;
 }
 
 int run_classify(const ClassifyOptions& o) {
-  std::ifstream in(o.model, std::ios::binary);
-  if (!in) throw ParseError(o.model, 1, 1, "a readable model file");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  Json j;
-  try {
-    j = Json::parse(ss.str());
-  } catch (const nlohmann::json::parse_error& e) {
-    throw ParseError(o.model, 1, e.byte, "JSON (a pathref model file)");
-  }
+  const Json j = io::parse_json_text(io::read_text_file(o.model, "model file"), o.model);
   const Model m = model_from_json(j, o.model);
   if (o.values.size() != m.features)
     throw UsageError(fmt::format("the model expects {} sensor distances, got {}", m.features, o.values.size()));

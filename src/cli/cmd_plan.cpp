@@ -104,17 +104,6 @@ std::string set_syntax(const Json& v) {
   return v.dump();
 }
 
-/// One line saying what the corner policy allows (spec/grid.md grid.corner-policy).
-const char* policy_meaning(grid::CornerPolicy p) {
-  switch (p) {
-    case grid::CornerPolicy::never: return "4-connected, no diagonal moves";
-    case grid::CornerPolicy::strict: return "diagonal needs both orthogonal neighbours free";
-    case grid::CornerPolicy::one: return "diagonal needs at least one orthogonal neighbour free";
-    case grid::CornerPolicy::always: return "diagonal allowed between any two free cells";
-  }
-  return "";
-}
-
 /// Checks that an endpoint is a free cell of the map; UsageError naming the option otherwise.
 void check_endpoint(const grid::Grid& g, grid::Cell c, const char* which) {
   if (!g.in_bounds(c))
@@ -122,35 +111,6 @@ void check_endpoint(const grid::Grid& g, grid::Cell c, const char* which) {
                                  g.height()));
   if (g.blocked(c))
     throw UsageError(fmt::format("{} ({}, {}) is a blocked cell", which, c.x, c.y));
-}
-
-/// Writes text to a file; UsageError when it cannot be written.
-void write_text_file(const std::string& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary);
-  out << text;
-  out.close();
-  if (!out) throw UsageError("cannot write '" + path + "'");
-}
-
-/// The map of the run and where it came from.
-struct LoadedMap {
-  io::MapFile map;
-  io::MapSource source;
-};
-
-LoadedMap load_map(const PlanOptions& o) {
-  if (o.map_file.empty() == o.builtin.empty())
-    throw UsageError("give exactly one of --map FILE or --builtin NAME (see pathref maps)");
-  if (!o.builtin.empty()) {
-    const io::BuiltinMap* b = io::find_builtin_map(o.builtin);
-    if (b == nullptr)
-      throw UsageError(fmt::format("unknown built-in map '{}' (known: {})", o.builtin,
-                                   io::builtin_map_names()));
-    return {io::load_builtin_map(*b), io::MapSource{"builtin", std::string(b->name), std::nullopt}};
-  }
-  io::MapFile m = io::load_map_file(o.map_file, map_read_options(o.read)).map;
-  const std::string name = m.name.empty() ? o.map_file : m.name;
-  return {std::move(m), io::MapSource{"file", name, o.map_file}};
 }
 
 /// The endpoint from the option if given, else the map's own; UsageError if neither.
@@ -324,7 +284,7 @@ int run_plan(const PlanOptions& o) {
   const Json overrides = parse_sets(o.sets);
   // Validates every --set key and type before anything runs (UsageError names a bad key).
   const Json merged = planners::merge_params(planner->defaults, overrides);
-  const LoadedMap lm = load_map(o);
+  const RunMap lm = load_run_map(o.map_file, o.builtin, o.read);
   const grid::Grid& g = lm.map.grid;
   const grid::Cell start = endpoint(o.start, lm.map.start, "--start", "start");
   const grid::Cell goal = endpoint(o.goal, lm.map.goal, "--goal", "goal");
@@ -347,8 +307,8 @@ int run_plan(const PlanOptions& o) {
 
   const Json j = io::plan_to_json(rec, g);
   // Files first: a file that cannot be written is an error (exit 2) before anything is printed.
-  if (!o.json_out.empty()) write_text_file(o.json_out, j.dump(2) + "\n");
-  if (!o.svg.empty()) write_text_file(o.svg, plan_svg(rec, g, j));
+  if (!o.json_out.empty()) write_output_file(o.json_out, j.dump(2) + "\n");
+  if (!o.svg.empty()) write_output_file(o.svg, plan_svg(rec, g, j));
   if (o.json)
     fmt::print("{}\n", j.dump(2));
   else
@@ -384,13 +344,38 @@ int run_maps(const std::string& name, const std::string& svg) {
   fmt::print("{}", b->text);
   if (!svg.empty()) {
     const io::MapFile m = io::load_builtin_map(*b);
-    write_text_file(svg, io::svg_map(m.grid, m.start, m.goal, {},
+    write_output_file(svg, io::svg_map(m.grid, m.start, m.goal, {},
                                      fmt::format("{} {}x{}", b->name, m.grid.width(), m.grid.height())));
   }
   return 0;
 }
 
 }  // namespace
+
+/// One line saying what the corner policy allows (spec/grid.md grid.corner-policy).
+const char* policy_meaning(grid::CornerPolicy p) {
+  switch (p) {
+    case grid::CornerPolicy::never: return "4-connected, no diagonal moves";
+    case grid::CornerPolicy::strict: return "diagonal needs both orthogonal neighbours free";
+    case grid::CornerPolicy::one: return "diagonal needs at least one orthogonal neighbour free";
+    case grid::CornerPolicy::always: return "diagonal allowed between any two free cells";
+  }
+  return "";
+}
+
+RunMap load_run_map(const std::string& map_file, const std::string& builtin, const MapReadArgs& read) {
+  if (map_file.empty() == builtin.empty())
+    throw UsageError("give exactly one of --map FILE or --builtin NAME (see pathref maps)");
+  if (!builtin.empty()) {
+    const io::BuiltinMap* b = io::find_builtin_map(builtin);
+    if (b == nullptr)
+      throw UsageError(fmt::format("unknown built-in map '{}' (known: {})", builtin, io::builtin_map_names()));
+    return {io::load_builtin_map(*b), io::MapSource{"builtin", std::string(b->name), std::nullopt}};
+  }
+  io::MapFile m = io::load_map_file(map_file, map_read_options(read)).map;
+  const std::string name = m.name.empty() ? map_file : m.name;
+  return {std::move(m), io::MapSource{"file", name, map_file}};
+}
 
 void add_plan_commands(CLI::App& app, Action& run) {
   static PlanOptions o;

@@ -173,13 +173,6 @@ Json curve_json(const continuous::CurveResult& c, double inflation, double ms) {
 
 std::string fmt_pt(Vec2 p) { return fmt::format("({}, {})", p.x, p.y); }
 
-void write_text(const std::string& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary);
-  out << text;
-  out.close();
-  if (!out) throw UsageError("cannot write '" + path + "'");
-}
-
 }  // namespace
 
 int run_continuous_plan(const ContinuousPlanArgs& o) {
@@ -230,8 +223,8 @@ int run_continuous_plan(const ContinuousPlanArgs& o) {
     j["curve"] = run.curve ? curve_json(*run.curve, om.inflation(), run.curve_ms) : Json(nullptr);
   }
   const std::string title = fmt::format("{}: {}, seed {}", cm.map_json.value("name", std::string()), o.algo, seed);
-  if (!o.json_out.empty()) write_text(o.json_out, j.dump(2) + "\n");
-  if (!o.svg.empty()) write_text(o.svg, io::svg_continuous(io::ContinuousScene{om.polygons(), om.radius(), om.lower(), om.upper()}, run, start, goal, title));
+  if (!o.json_out.empty()) write_output_file(o.json_out, j.dump(2) + "\n");
+  if (!o.svg.empty()) write_output_file(o.svg, io::svg_continuous(io::ContinuousScene{om.polygons(), om.radius(), om.lower(), om.upper()}, run, start, goal, title));
   if (o.json) {
     fmt::print("{}\n", j.dump(2));
   } else {

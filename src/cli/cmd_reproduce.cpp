@@ -118,14 +118,7 @@ std::string build_type() {
 #endif
 }
 
-void write_file(const std::filesystem::path& p, const std::string& text) {
-  std::error_code ec;
-  if (!p.parent_path().empty()) std::filesystem::create_directories(p.parent_path(), ec);
-  std::ofstream out(p, std::ios::binary);
-  out << text;
-  out.close();
-  if (ec || !out) throw UsageError(fmt::format("cannot write '{}'", p.string()));
-}
+void write_file(const std::filesystem::path& p, const std::string& text) { write_output_file(p.string(), text); }
 
 grid::Grid load_grid(const std::string& file) {
   io::MapReadOptions opt;

@@ -15,6 +15,8 @@
 #include <thread>
 
 #include "commands.hpp"
+#include "pathref/io/json_text.hpp"
+#include "pathref/io/map_file.hpp"
 #include "pathref/core/error.hpp"
 #include "pathref/reproduce/cin2021_ml.hpp"
 #include "pathref/reproduce/runs.hpp"
@@ -65,12 +67,7 @@ int to_int(const std::string& s, const char* opt, int lo, int hi) {
 }
 
 void write(const std::filesystem::path& p, const std::string& text) {
-  std::error_code ec;
-  std::filesystem::create_directories(p.parent_path(), ec);
-  std::ofstream out(p, std::ios::binary);
-  out << text;
-  out.close();
-  if (!out) throw UsageError("cannot write '" + p.string() + "'");
+  write_output_file(p.string(), text);
   fmt::print("wrote {}\n", p.string());
 }
 
@@ -113,11 +110,7 @@ int run(const Options& o) {
     sk_file = o.sklearn;
   }
   if (!sk_file.empty()) {
-    std::ifstream in(sk_file);
-    if (!in) throw UsageError("cannot read " + sk_file);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    cfg.sklearn = Json::parse(ss.str());
+    cfg.sklearn = io::parse_json_text(io::read_text_file(sk_file, "scikit-learn results file"), sk_file);
   }
   cfg.provenance.jobs = jobs;
   Json doc;

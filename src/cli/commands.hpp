@@ -10,6 +10,7 @@
 
 #include "pathref/grid/grid.hpp"
 #include "pathref/io/map_file.hpp"
+#include "pathref/io/plan_json.hpp"
 
 namespace pathref::cli {
 
@@ -18,7 +19,11 @@ using Action = std::function<int()>;
 
 /// Registers a subcommand on `app`; `run` is set to its action when the user picks it.
 void add_eval_command(CLI::App& app, Action& run);
+/// `pathref eval --list --json`: every rule with its inputs and outputs (spec/cli.md#eval).
+[[nodiscard]] nlohmann::json rule_list_json();
 void add_golden_command(CLI::App& app, Action& run);
+void add_check_command(CLI::App& app, Action& run);    // check (spec/check.md)
+void add_conform_command(CLI::App& app, Action& run);  // conform (spec/conform.md)
 void add_plan_commands(CLI::App& app, Action& run);  // plan, maps
 void add_drive_command(CLI::App& app, Action& run);  // drive (spec/mecanum.md#cli)
 void add_scen_command(CLI::App& app, Action& run);     // scen (spec/formats.md#cli-scen)
@@ -43,6 +48,22 @@ void add_reproduce_command(CLI::App& app, Action& run);  // reproduce (spec/repr
 void add_learn_commands(CLI::App& app, Action& run);  // learn, classify (spec/cin2021-ml.md#cli)
 /// `reproduce cin2021-ml` (spec/cin2021-ml.md#reproduction), added to the reproduce command.
 void add_reproduce_cin2021_ml(CLI::App* reproduce, Action& run);
+
+/// Writes `text` to the file `path` (binary), creating missing parent folders; UsageError
+/// `cannot write 'F': REASON` when it cannot (spec/cli.md#output-files). Defined in output.cpp.
+void write_output_file(const std::string& path, const std::string& text);
+
+/// The map of a run and where it came from.
+struct RunMap {
+  io::MapFile map;
+  io::MapSource source;
+};
+/// The map of `--map FILE` or `--builtin NAME` (exactly one non-empty; UsageError otherwise, and
+/// for an unknown built-in). Defined in cmd_plan.cpp (spec/cli.md#plan).
+[[nodiscard]] RunMap load_run_map(const std::string& map_file, const std::string& builtin, const MapReadArgs& read);
+
+/// What a corner policy allows, in words (the `policy` line of plan and check). Defined in cmd_plan.cpp.
+[[nodiscard]] const char* policy_meaning(grid::CornerPolicy p);
 
 /// "X,Y" with X and Y non-negative decimal integers (at most 18 digits) -> Cell; UsageError
 /// naming `option` otherwise (spec/cli.md#plan, values). Defined in cmd_plan.cpp.

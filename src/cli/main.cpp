@@ -22,6 +22,8 @@ int main(int argc, char** argv) {
   pathref::cli::add_plan_commands(app, run);
   pathref::cli::add_eval_command(app, run);
   pathref::cli::add_golden_command(app, run);
+  pathref::cli::add_check_command(app, run);
+  pathref::cli::add_conform_command(app, run);
   pathref::cli::add_drive_command(app, run);
   pathref::cli::add_scen_command(app, run);
   pathref::cli::add_convert_command(app, run);

@@ -80,5 +80,7 @@ expect_exit 2 "is a MovingAI scenario file, not a map: run it with pathref scen"
 expect_exit 2 "--to: png not in {pathref-grid,movingai,matrix,matlab}" convert "$m" --to png
 expect_exit 2 "--format: png not in {auto,pathref-grid,movingai,matrix,ros,scene}" convert "$m" --to matrix --format png
 expect_exit 2 "--max-cells expects a decimal integer from 1 to 268435456, got '268435457'" convert "$m" --to matrix --max-cells 268435457
-expect_exit 2 "cannot write '$tmp/no/dir/x'" convert "$m" --to matrix -o "$tmp/no/dir/x"
+expect_exit 0 "" convert "$m" --to matrix -o "$tmp/no/dir/x"   # missing folders are created
+[ -s "$tmp/no/dir/x" ] || { echo "FAIL: convert -o into a new folder wrote nothing"; exit 1; }
+expect_exit 2 "cannot write '$tmp/no/dir': it is a folder" convert "$m" --to matrix -o "$tmp/no/dir"
 echo "convert: ok"

@@ -18,14 +18,16 @@ help() {
   done
 }
 
-help -- plan maps eval golden scen convert inflate drive
+help -- plan maps eval golden check conform scen convert inflate drive
+help check -- --map --builtin --path --path-format --base --origin --policy --start --goal --json --json-out
+help conform -- --exec --rules --timeout --json --json-out dir
 help scen -- --map --algo --every --digits --json --format --max-side
 help convert -- --to --format --swamp --water --unknown --max-side --max-cells
-help inflate -- --out --svg scene
+help inflate -- --output --out --svg scene
 help drive -- --path --base --cell --svg --json
 help plan -- --map --builtin --algo --start --goal --seed --policy --set --json --json-out --svg astar
 help maps -- --svg name
-help eval -- --list rule
+help eval -- --list --json rule
 help golden -- check regenerate
 help golden check -- --verbose dir
 help golden regenerate -- dir

@@ -20,6 +20,10 @@ s=tests/data/scenes/ushape.json
 "$pathref" inflate "$s" >"$tmp/a.txt"
 "$pathref" inflate "$s" --out "$tmp/b.txt" --svg "$tmp/u.svg"
 cmp -s "$tmp/a.txt" "$tmp/b.txt" || { echo "FAIL: stdout and --out differ"; exit 1; }
+# -o and --output (convert's spelling) are the same option as --out (spec/cli.md#output-files)
+"$pathref" inflate "$s" -o "$tmp/c.txt" >/dev/null
+"$pathref" inflate "$s" --output "$tmp/d/e.txt" >/dev/null
+cmp -s "$tmp/a.txt" "$tmp/c.txt" && cmp -s "$tmp/a.txt" "$tmp/d/e.txt" || { echo "FAIL: -o/--output differ from --out"; exit 1; }
 head -1 "$tmp/a.txt" | grep -q '^pathref-grid 1' || { echo "FAIL: not pathref-grid 1"; head -3 "$tmp/a.txt"; exit 1; }
 grep -q '^size 20 16' "$tmp/a.txt" || { echo "FAIL: size"; cat "$tmp/a.txt"; exit 1; }
 grep -q '<svg' "$tmp/u.svg" || { echo "FAIL: no SVG written"; exit 1; }

@@ -42,7 +42,8 @@ expect_exit 2 "unknown built-in map 'nope' (known: grid20, shi6x6)" plan --built
 expect_exit 2 "give exactly one of --map FILE or --builtin NAME" plan --algo astar
 expect_exit 2 "--map excludes --builtin" plan --builtin grid20 --map "$tmp/x" --algo astar
 expect_exit 2 "cannot read map file '$tmp/missing.txt'" plan --map "$tmp/missing.txt" --algo astar
-expect_exit 2 "cannot write '$tmp/no/such/dir/f.svg'" "${g[@]}" --algo astar --svg "$tmp/no/such/dir/f.svg"
+: >"$tmp/afile"   # a file where a folder is needed: the reason is given (spec/cli.md#output-files)
+expect_exit 2 "cannot write '$tmp/afile/dir/f.svg': cannot create the folder '$tmp/afile/dir': " "${g[@]}" --algo astar --svg "$tmp/afile/dir/f.svg"
 [ ! -s "$tmp/out" ] || { echo "FAIL: a failed run printed a report"; cat "$tmp/out"; exit 1; }
 expect_exit 2 "The following argument was not expected: --frobnicate" plan --builtin grid20 --algo astar --frobnicate
 

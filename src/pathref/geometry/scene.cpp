@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "pathref/core/error.hpp"
+#include "pathref/io/json_text.hpp"
 
 namespace pathref::geometry {
 
@@ -171,18 +172,6 @@ class Reader {
   std::string file_;
 };
 
-std::pair<std::size_t, std::size_t> line_column(std::string_view text, std::size_t byte) {
-  std::size_t line = 1, col = 1;
-  for (std::size_t i = 0; i < byte && i < text.size(); ++i) {
-    if (text[i] == '\n') {
-      ++line;
-      col = 1;
-    } else {
-      ++col;
-    }
-  }
-  return {line, col};
-}
 
 }  // namespace
 
@@ -258,7 +247,7 @@ Scene parse_scene_json(std::string_view text, std::string_view filename) {
   ExactDom dom(root);
   const bool ok = Json::sax_parse(text.begin(), text.end(), &dom, Json::input_format_t::json, true);
   if (!ok) {
-    const auto [line, col] = line_column(text, dom.position() > 0 ? dom.position() - 1 : 0);
+    const auto [line, col] = io::line_column(text, dom.position() > 0 ? dom.position() - 1 : 0);
     throw ParseError(std::string(filename), line, col,
                      "expected valid JSON (" + (dom.error().empty() ? std::string("syntax error") : dom.error()) + ")");
   }

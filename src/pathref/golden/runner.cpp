@@ -7,6 +7,8 @@
 #include <sstream>
 
 #include "pathref/core/error.hpp"
+#include "pathref/io/json_text.hpp"
+#include "pathref/io/map_file.hpp"
 #include "pathref/rules/registry.hpp"
 
 namespace pathref::golden {
@@ -110,11 +112,33 @@ std::string compare(const Json& expected, const Json& actual, const Json& tolera
 }
 
 namespace {
-
 const Json& tolerance_of(const Json& group, const Json& test) {
   if (test.contains("tolerance")) return test.at("tolerance");
   return group.at("tolerance");
 }
+}  // namespace
+
+std::string judge(const Json& group, const Json& test, const Json& actual) {
+  const Json& expected = test.at("expected");
+  const std::string result = test.at("result").get<std::string>();
+  if (result == "invalid") {
+    if (!actual.contains("error"))
+      return "expected error " + expected.value("error", std::string("?")) + ", got " + actual.dump();
+    if (actual.at("error") != expected.at("error"))
+      return "expected error " + expected.at("error").dump() + ", got " + actual.at("error").dump() + ": " +
+             actual.value("message", std::string());
+    return "";
+  }
+  if (actual.contains("error")) {
+    const Json& kind = actual.at("error");
+    return "unexpected " + (kind.is_string() ? kind.get<std::string>() : kind.dump()) + ": " +
+           actual.value("message", std::string());
+  }
+  return compare(expected, actual, tolerance_of(group, test));
+}
+
+namespace {
+
 
 /// Runs one test. Returns the actual output, or {"error": kind} when the rule threw.
 Json run_rule(const rules::Rule& rule, const Json& input) {
@@ -134,33 +158,12 @@ CaseResult check_test(const Json& doc, const Json& group, const Json& test, cons
   r.rule = rule.id;
   r.tc_id = test.at("tcId").get<long long>();
   try {
-    const Json& expected = test.at("expected");
-    if (expected.is_null()) {
+    if (test.at("expected").is_null()) {
       r.status = Status::fail;
       r.message = "expected is null: run `pathref golden regenerate`";
       return r;
     }
-    const Json actual = run_rule(rule, compose_input(doc, group, test));
-    const std::string result = test.at("result").get<std::string>();
-    if (result == "invalid") {
-      if (!actual.contains("error")) {
-        r.status = Status::fail;
-        r.message = "expected error " + expected.value("error", std::string("?")) + ", got " +
-                    actual.dump();
-      } else if (actual.at("error") != expected.at("error")) {
-        r.status = Status::fail;
-        r.message = "expected error " + expected.at("error").dump() + ", got " +
-                    actual.at("error").dump() + ": " + actual.value("message", std::string());
-      }
-      return r;
-    }
-    if (actual.contains("error")) {
-      r.status = Status::fail;
-      r.message = "unexpected " + actual.at("error").get<std::string>() + ": " +
-                  actual.value("message", std::string());
-      return r;
-    }
-    r.message = compare(expected, actual, tolerance_of(group, test));
+    r.message = judge(group, test, run_rule(rule, compose_input(doc, group, test)));
     if (!r.message.empty()) r.status = Status::fail;
   } catch (const std::exception& e) {
     r.status = Status::fail;
@@ -185,21 +188,9 @@ Report check_document(const Json& doc, const std::string& file) {
   return report;
 }
 
-namespace {
-Json read_json(const fs::path& p) {
-  std::ifstream in(p);
-  if (!in) throw UsageError("cannot open " + p.string());
-  try {
-    return Json::parse(in);
-  } catch (const Json::parse_error& e) {
-    throw ParseError(p.string(), 0, e.byte, std::string("invalid JSON: ") + e.what());
-  }
-}
-}  // namespace
-
-Report check_directory(const fs::path& dir) {
-  Report report;
-  if (!fs::is_directory(dir)) throw UsageError("not a directory: " + dir.string());
+std::vector<fs::path> golden_files(const fs::path& dir) {
+  if (!fs::is_directory(dir))
+    throw UsageError("not a directory: '" + dir.string() + "' (give the golden folder, e.g. pathref golden check golden/)");
   std::vector<fs::path> files;
   for (const auto& entry : fs::recursive_directory_iterator(dir)) {
     if (!entry.is_regular_file() || entry.path().extension() != ".json") continue;
@@ -207,8 +198,53 @@ Report check_directory(const fs::path& dir) {
     files.push_back(entry.path());
   }
   std::sort(files.begin(), files.end());
-  for (const auto& p : files) {
-    Report r = check_document(read_json(p), p.string());
+  if (files.empty())
+    throw UsageError("no golden vectors in '" + dir.string() + "' (no *.json file outside schema/)");
+  return files;
+}
+
+namespace {
+/// `obj[key]` of the JSON type `type`, or a UsageError naming the file, where and the key.
+const Json& need(const Json& obj, const char* key, Json::value_t type, const std::string& file,
+                 const std::string& where) {
+  const auto it = obj.is_object() ? obj.find(key) : obj.end();
+  const char* tname = type == Json::value_t::string ? "a string" : type == Json::value_t::array ? "an array" : "an object";
+  if (!obj.is_object() || it == obj.end())
+    throw UsageError(file + ": malformed golden file: " + where + " has no '" + key + "' (" + tname +
+                     "; spec/golden-format.md)");
+  if (it->type() != type)
+    throw UsageError(file + ": malformed golden file: " + where + "'" + key + "' must be " + tname);
+  return *it;
+}
+}  // namespace
+
+Json read_document(const fs::path& p) {
+  const std::string file = p.string();
+  const Json doc = io::parse_json_text(io::read_text_file(file, "golden file"), file);
+  (void)need(doc, "rule", Json::value_t::string, file, "the document");
+  std::size_t g = 0;
+  for (const Json& group : need(doc, "testGroups", Json::value_t::array, file, "the document")) {
+    ++g;
+    const std::string where = "testGroups[" + std::to_string(g - 1) + "]";
+    (void)need(group, "tolerance", Json::value_t::object, file, where);
+    std::size_t t = 0;
+    for (const Json& test : need(group, "tests", Json::value_t::array, file, where)) {
+      const std::string w = where + ".tests[" + std::to_string(t++) + "]";
+      if (!test.is_object() || !test.contains("tcId") || !test.at("tcId").is_number_integer())
+        throw UsageError(file + ": malformed golden file: " + w + " has no integer 'tcId'");
+      (void)need(test, "result", Json::value_t::string, file, w);
+      if (!test.contains("expected"))
+        throw UsageError(file + ": malformed golden file: " + w + " (tcId " + test.at("tcId").dump() +
+                         ") has no 'expected'");
+    }
+  }
+  return doc;
+}
+
+Report check_directory(const fs::path& dir) {
+  Report report;
+  for (const auto& p : golden_files(dir)) {
+    Report r = check_document(read_document(p), p.string());
     report.cases.insert(report.cases.end(), r.cases.begin(), r.cases.end());
   }
   return report;

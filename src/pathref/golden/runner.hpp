@@ -37,6 +37,22 @@ struct Report {
 [[nodiscard]] std::string compare(const Json& expected, const Json& actual, const Json& tolerance,
                                   const std::string& where = "");
 
+/// Judges one answer to a test (spec/golden-format.md, "Result semantics"): `actual` is the rule's
+/// outputs, or {"error": KIND, "message": ...} when it raised. Returns "" when the answer passes
+/// (an `invalid` test: the same error kind; otherwise no error and outputs matching `expected`
+/// under the test's or else the group's tolerance), else what differs. Used by the library runner
+/// and by `pathref conform` (spec/conform.md).
+[[nodiscard]] std::string judge(const Json& group, const Json& test, const Json& actual);
+
+/// Every golden file under `dir` (recursively, *.json outside schema/), sorted. UsageError when
+/// `dir` is not a directory or holds no such file (0 vectors never pass).
+[[nodiscard]] std::vector<std::filesystem::path> golden_files(const std::filesystem::path& dir);
+
+/// Reads one golden file: a JSON syntax error is a ParseError at its real line and column; a
+/// document without `rule`, `testGroups`, a group's `tolerance`/`tests`, a test's `tcId`,
+/// `result`, `expected` is a UsageError naming the file and where the key is missing.
+[[nodiscard]] Json read_document(const std::filesystem::path& path);
+
 /// Checks one parsed golden document. `file` is only used in messages.
 [[nodiscard]] Report check_document(const Json& doc, const std::string& file);
 /// Checks every *.json file under `dir` (recursively), skipping schema/.

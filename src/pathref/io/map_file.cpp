@@ -199,6 +199,10 @@ LoadedMapFile load_map_file(const std::string& path, const MapReadOptions& optio
   check_limits(options.limits);
   if (options.format == MapFormat::automatic && extension_of(path) == ".scen")
     throw UsageError(fmt::format("'{}' is a MovingAI scenario file, not a map: run it with pathref scen", path));
+  if (options.format == MapFormat::automatic && (extension_of(path) == ".pgm" || extension_of(path) == ".pnm"))
+    throw UsageError(fmt::format("'{}' is an image: a ROS map is read through its YAML file, which names the image "
+                                 "and gives its resolution and thresholds (pass --map FILE.yaml)",
+                                 path));
   if (options.format == MapFormat::ros ||
       (options.format == MapFormat::automatic && detect_map_format(path, "") == MapFormat::ros)) {
     RosMapOptions ros;

@@ -11,6 +11,7 @@
 #include <utility>
 
 #include "pathref/core/error.hpp"
+#include "pathref/io/json_text.hpp"
 #include "pathref/grid/json_codec.hpp"
 #include "pathref/io/map_file.hpp"
 #include "pathref/planners/planner.hpp"
@@ -101,19 +102,6 @@ class Positions {
   std::map<std::string, std::size_t> pos_;
 };
 
-std::pair<std::size_t, std::size_t> line_col(std::string_view text, std::size_t at) {
-  std::size_t line = 1, col = 1;
-  for (std::size_t i = 0; i < at && i < text.size(); ++i) {
-    if (text[i] == '\n') {
-      ++line;
-      col = 1;
-    } else {
-      ++col;
-    }
-  }
-  return {line, col};
-}
-
 class Reader {
  public:
   Reader(std::string_view file, std::string_view text, const Positions* pos) : file_(file), text_(text), pos_(pos) {}
@@ -126,7 +114,7 @@ class Reader {
       for (;;) {
         const std::size_t at = pos_->at(p);
         if (at > 0 || p.empty()) {
-          std::tie(line, col) = line_col(text_, at);
+          std::tie(line, col) = io::line_column(text_, at);
           break;
         }
         const auto slash = p.rfind('/');
@@ -450,13 +438,7 @@ std::string scenario_format(std::string_view text) {
 }
 
 FusedScenario parse_fused_scenario(std::string_view text, std::string_view file, const std::string& base_dir) {
-  Json doc;
-  try {
-    doc = Json::parse(text.begin(), text.end());
-  } catch (const Json::parse_error& e) {
-    const auto [line, col] = line_col(text, e.byte == 0 ? 0 : e.byte - 1);
-    throw ParseError(std::string(file), line, col, "invalid JSON (" + std::string(e.what()) + ")");
-  }
+  const Json doc = io::parse_json_text(text, file);
   const Positions pos(text);
   const Reader rd(file, text, &pos);
   return read_scenario(rd, doc, base_dir);

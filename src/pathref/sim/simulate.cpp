@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "pathref/core/error.hpp"
+#include "pathref/io/json_text.hpp"
 #include "pathref/equations/heuristics.hpp"
 #include "pathref/equations/rls.hpp"
 #include "pathref/grid/json_codec.hpp"
@@ -255,22 +256,7 @@ Scenario scenario_from_json(const Json& doc, std::string_view file, const std::s
 }
 
 Scenario parse_scenario(std::string_view text, std::string_view file, const std::string& base_dir) {
-  Json doc;
-  try {
-    doc = Json::parse(text.begin(), text.end());
-  } catch (const Json::parse_error& e) {
-    std::size_t line = 1, col = 1;
-    const std::size_t at = e.byte == 0 ? 0 : e.byte - 1;
-    for (std::size_t i = 0; i < at && i < text.size(); ++i) {
-      if (text[i] == '\n') {
-        ++line;
-        col = 1;
-      } else {
-        ++col;
-      }
-    }
-    throw ParseError(std::string(file), line, col, "invalid JSON (" + std::string(e.what()) + ")");
-  }
+  const Json doc = io::parse_json_text(text, file);
   return scenario_from_json(doc, file, base_dir);
 }
 
