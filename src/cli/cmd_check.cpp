@@ -244,7 +244,7 @@ int run_check(const CheckOptions& o) {
       map_json = map ? Json{{"source", map->source.kind}, {"name", map->source.name},
                             {"file", map->source.file ? Json(*map->source.file) : Json(nullptr)},
                             {"width", g.width()}, {"height", g.height()}, {"blocked", g.blocked_count()}}
-                     : Json{{"source", "plan"}, {"name", rec.name}, {"file", rec.name}, {"width", g.width()},
+                     : Json{{"source", "plan"}, {"name", rec.name}, {"file", nullptr}, {"width", g.width()},
                             {"height", g.height()}, {"blocked", g.blocked_count()}};
     results.push_back(std::move(c.j));
   }

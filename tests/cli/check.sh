@@ -99,7 +99,7 @@ printf '0 0 1\n1 0 1\n' > three.txt
 expect_exit 2 "three.txt:1:1: 3 numbers per line: expected two (x y) or one (a node number)" check --map m.grid --path three.txt
 expect_exit 2 "node.txt:2:1: expected two numbers (row col) on this line, got 1" check --map m.grid --path node.txt --path-format rowcol
 printf '[[0,0],[1,0]' > broken.json
-expect_exit 2 "broken.json:1:13: invalid JSON" check --map m.grid --path broken.json
+expect_exit 2 "broken.json:1:1" check --map m.grid --path broken.json
 printf '{"path": [[0,0]]}' > obj.json
 expect_exit 2 "a JSON object must be a pathref-plan record" check --map m.grid --path obj.json
 printf '# nothing\n' > empty.txt

@@ -64,8 +64,9 @@ def main(argv):
                     answer = {"id": req["id"], "output": fn(req["input"])}
                 except DomainError as e:
                     answer = {"id": req["id"], "error": "DomainError", "message": str(e)}
-                except (KeyError, TypeError, ValueError) as e:  # a request this adapter cannot read
-                    answer = {"id": req["id"], "error": "UsageError", "message": repr(e)}
+                except Exception as e:  # noqa: BLE001  a rule module's own ParseError, or a request it cannot read
+                    kind = "ParseError" if type(e).__name__ == "ParseError" else "UsageError"
+                    answer = {"id": req["id"], "error": kind, "message": repr(e)}
         sys.stdout.write(json.dumps(wire(answer), allow_nan=False) + "\n")
         sys.stdout.flush()
     return 0
