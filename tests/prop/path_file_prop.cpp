@@ -47,7 +47,7 @@ TEST_CASE("parse_path_text: formats, detection and errors at their line and colu
     REQUIRE(r.size() == 1);
     return r[0];
   };
-  CHECK(one("0 0\n1,0\n\n# c\n2;0").format == PathFormat::xy);  // ';' ends a node
+  CHECK(one("0 0\n1,0\n\n# c\n2 0;3 1").numbers == std::vector<std::int64_t>{0, 0, 1, 0, 2, 0, 3, 1});  // ';' ends a node
   CHECK(one("0 0\n1,0\n2 0 % c\n").numbers == std::vector<std::int64_t>{0, 0, 1, 0, 2, 0});
   CHECK(one("9\n10\n").format == PathFormat::node);
   CHECK(one("9 10 11").format == PathFormat::node);
