@@ -32,6 +32,10 @@ rules::Json parse_assignments(const std::vector<std::string>& assignments) {
 /// UsageError when `input` has a key that is not one of the rule's inputs (spec/cli.md#eval):
 /// a misspelt key must never be ignored in favour of the default.
 void reject_unknown_inputs(const rules::Rule& rule, const rules::Json& input) {
+  // A placeholder input (`<parameter>`: any planner parameter, checked by the planner itself
+  // against its defaults, planners::merge_params) admits every key.
+  for (const auto& f : rule.inputs)
+    if (!f.name.empty() && f.name.front() == '<') return;
   for (const auto& [key, value] : input.items()) {
     bool known = false;
     for (const auto& f : rule.inputs) known = known || f.name == key;

@@ -87,8 +87,8 @@ expect_exit 1 "summary: 3 paths, 2 valid, 1 invalid" check --map m.grid --path r
 grep -qE "^runs.jsonl:2 +NO +corner_cut +2 " out || { echo "FAIL: table row of runs.jsonl:2"; cat out; exit 1; }
 grep -qF "length of valid paths: n 2, mean 4.70711, sd 0.414214, min 4.41421, max 5" out || { echo "FAIL: summary line"; cat out; exit 1; }
 mkdir runs; cp xy.txt runs/a.txt; cp xy.json runs/b.json; cp save_ascii.txt runs/c.txt
-expect_exit 0 "summary: 3 paths, 3 valid, 0 invalid" check --map m.grid --path runs --json-out out/check.json
-[ -s out/check.json ] || { echo "FAIL: --json-out"; exit 1; }
+expect_exit 0 "summary: 3 paths, 3 valid, 0 invalid" check --map m.grid --path runs --json-out res/check.json
+[ -s res/check.json ] || { echo "FAIL: --json-out"; exit 1; }
 
 # bad input: exit 2 with file, line, column
 printf '0 0\n1\n2 0\n' > ragged.txt
