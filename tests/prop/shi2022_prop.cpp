@@ -273,7 +273,12 @@ TEST_CASE("prop_fitness_factors_positive", "[shi2022][prop]") {
     RC_ASSERT(f2 > 0.0);
     RC_ASSERT(f2 <= 1.0);
     RC_ASSERT(f3 > 0.0);
-    RC_ASSERT(f3 <= static_cast<double>(path.size() - 1));
+    RC_ASSERT(f3 <= 1.0);  // inverse_total_plus_one
+    ga::SafetyOptions per_node;
+    per_node.aggregate = ga::SafetyAggregate::per_node;
+    const double f3n = ga::safety_factor(g, path, per_node);
+    RC_ASSERT(f3n > 0.0);
+    RC_ASSERT(f3n <= static_cast<double>(path.size() - 1));
     RC_ASSERT(ga::weighted_fitness(f1, f2, f3) > 0.0);
   });
 }
@@ -348,5 +353,60 @@ TEST_CASE("prop_safety_never_increases_with_an_extra_obstacle", "[shi2022][prop]
     const double before = ga::safety_factor(g, path);
     g.set_blocked(extra, true);
     RC_ASSERT(ga::safety_factor(g, path) <= before);
+  });
+}
+
+namespace {
+/// Blocked 8-neighbours of c counted here from Grid::free (outside cells free): the oracle for
+/// Eq. 18, independent of metrics::safety_counts.
+std::int64_t blocked_around(const grid::Grid& g, Cell c) {
+  std::int64_t n = 0;
+  for (std::int64_t dy = -1; dy <= 1; ++dy)
+    for (std::int64_t dx = -1; dx <= 1; ++dx) {
+      const Cell q{c.x + dx, c.y + dy};
+      if ((dx != 0 || dy != 0) && g.in_bounds(q) && !g.free(q)) ++n;
+    }
+  return n;
+}
+}  // namespace
+
+TEST_CASE("prop_safety_default_is_one_over_one_plus_the_total_hazard", "[shi2022][prop]") {
+  rc::prop("default fit_3 == 1 / (1 + blocked neighbours of every node but the goal); mean == per_node / (n - 1)",
+           [] {
+             const grid::Grid g = testing::random_grid(*rc::gen::arbitrary<std::uint32_t>(),
+                                                       *rc::gen::inRange(2, 9), *rc::gen::inRange(2, 9), 0.4);
+             const auto path = *gen_nodes_in(g, 2, 10);
+             std::int64_t total = 0;
+             double sum = 0.0;
+             for (std::size_t k = 0; k + 1 < path.size(); ++k) {
+               total += blocked_around(g, path[k]);
+               sum += 1.0 / static_cast<double>(1 + blocked_around(g, path[k]));
+             }
+             RC_ASSERT(ga::safety_factor(g, path) == 1.0 / static_cast<double>(1 + total));
+             RC_ASSERT((ga::safety_factor(g, path) == 1.0) == (total == 0));
+             ga::SafetyOptions o;
+             o.aggregate = ga::SafetyAggregate::per_node;
+             RC_ASSERT(ga::safety_factor(g, path, o) == sum);
+             o.aggregate = ga::SafetyAggregate::mean;
+             const double mean = ga::safety_factor(g, path, o);
+             RC_ASSERT(mean == sum / static_cast<double>(path.size() - 1));
+             RC_ASSERT(mean >= 1.0 / 9.0);
+             RC_ASSERT(mean <= 1.0);
+           });
+}
+
+TEST_CASE("prop_safety_default_never_rewards_an_extra_node", "[shi2022][prop]") {
+  rc::prop("inserting a node before the goal never raises the default fit_3 (per_node: raises it)", [] {
+    const grid::Grid g = testing::random_grid(*rc::gen::arbitrary<std::uint32_t>(), *rc::gen::inRange(2, 9),
+                                              *rc::gen::inRange(2, 9), 0.4);
+    const auto path = *gen_nodes_in(g, 2, 10);
+    const Cell extra{*rc::gen::inRange<std::int64_t>(0, g.width()), *rc::gen::inRange<std::int64_t>(0, g.height())};
+    RC_PRE(!(extra == path[path.size() - 2]) && !(extra == path.back()));
+    auto longer = path;
+    longer.insert(longer.end() - 1, extra);
+    RC_ASSERT(ga::safety_factor(g, longer) <= ga::safety_factor(g, path));
+    ga::SafetyOptions per_node;
+    per_node.aggregate = ga::SafetyAggregate::per_node;
+    RC_ASSERT(ga::safety_factor(g, longer, per_node) > ga::safety_factor(g, path, per_node));
   });
 }

@@ -242,16 +242,36 @@ TEST_CASE("shi2022.eq17: exact bands where the printed law of cosines rounds", "
 
 TEST_CASE("shi2022.eq18: safety readings on a map with an obstacle", "[shi2022]") {
   const grid::Grid g = grid::Grid::from_rows_top_first({".....", ".....", "..#..", ".....", "....."});
+  // Row y = 1 runs below the obstacle (2,2): blocked-neighbour counts [0, 1, 1, 1, 0].
   const std::vector<Cell> row1{{0, 1}, {1, 1}, {2, 1}, {3, 1}, {4, 1}};
-  CHECK(ga::safety_factor(g, row1) == 2.5);
-  ga::SafetyOptions all;
+  // Default inverse_total_plus_one: T = 0 + 1 + 1 + 1 over every node but the goal.
+  CHECK(ga::safety_factor(g, row1) == 0.25);
+  ga::SafetyOptions per_node;
+  per_node.aggregate = ga::SafetyAggregate::per_node;
+  CHECK(ga::safety_factor(g, row1, per_node) == 2.5);  // 1/1 + 1/2 + 1/2 + 1/2, as printed
+  ga::SafetyOptions all = per_node;
   all.nodes = ga::SafetyNodes::all;
   CHECK(ga::safety_factor(g, row1, all) == 3.5);
-  ga::SafetyOptions skip;
+  ga::SafetyOptions skip = per_node;
   skip.safe = ga::SafeNode::skip;
   CHECK(ga::safety_factor(g, row1, skip) == 3.0);
+  ga::SafetyOptions mean;
+  mean.aggregate = ga::SafetyAggregate::mean;
+  CHECK(ga::safety_factor(g, row1, mean) == 0.625);  // 2.5 / 4
+  // The default does not reward nodes: a detour over the obstacle (counts 0,1,1,1,1,1) scores
+  // 1/6 < 1/4, while the printed per_node sum rewards it (1 + 5 * 1/2 = 3.5 > 2.5).
+  const std::vector<Cell> detour{{0, 1}, {1, 2}, {1, 3}, {2, 3}, {3, 3}, {3, 2}, {4, 1}};
+  CHECK(ga::safety_factor(g, detour) == 1.0 / 6.0);
+  CHECK(ga::safety_factor(g, detour, per_node) == 3.5);
+  // A path touching no obstacle scores 1 under the default, whatever its length.
+  const std::vector<Cell> row0{{0, 0}, {1, 0}, {2, 0}, {3, 0}, {4, 0}};
+  CHECK(ga::safety_factor(g, row0) == 1.0);
   const std::vector<Cell> outside{{4, 0}, {5, 0}};
   CHECK_THROWS_AS(ga::safety_factor(g, outside), DomainError);
+  CHECK(ga::parse_safety_aggregate("per_node") == ga::SafetyAggregate::per_node);
+  CHECK(ga::parse_safety_aggregate("mean") == ga::SafetyAggregate::mean);
+  CHECK(ga::parse_safety_aggregate("inverse_total_plus_one") == ga::SafetyAggregate::inverse_total_plus_one);
+  CHECK_THROWS_AS(ga::parse_safety_aggregate("sum"), UsageError);
 }
 
 TEST_CASE("shi2022.eq19 eq20: P_c and P_m at i = 0, M_g/2, M_g with M_g = 50", "[shi2022]") {

@@ -189,6 +189,14 @@ SafetyCount parse_safety_count(std::string_view name) {
   throw UsageError("unknown safety count '" + std::string(name) + "' (expected count or indicator)");
 }
 
+SafetyAggregate parse_safety_aggregate(std::string_view name) {
+  if (name == "inverse_total_plus_one") return SafetyAggregate::inverse_total_plus_one;
+  if (name == "per_node") return SafetyAggregate::per_node;
+  if (name == "mean") return SafetyAggregate::mean;
+  throw UsageError("unknown safety aggregate '" + std::string(name) +
+                   "' (expected inverse_total_plus_one, per_node or mean)");
+}
+
 SafeNode parse_safe_node(std::string_view name) {
   if (name == "one") return SafeNode::one;
   if (name == "skip") return SafeNode::skip;
@@ -219,14 +227,22 @@ double safety_factor(const grid::Grid& g, std::span<const grid::Cell> path, Safe
       end = n >= 1 ? n - 1 : 0;
       break;
   }
+  const auto hazard = [&](std::size_t k) {
+    return options.count == SafetyCount::count ? s[k] : (s[k] > 0 ? std::int64_t{1} : std::int64_t{0});
+  };
+  if (options.aggregate == SafetyAggregate::inverse_total_plus_one) {
+    std::int64_t total = 0;  // at most 8 per node: exact for any path that fits in memory
+    for (std::size_t k = first; k < end; ++k) total += hazard(k);
+    return 1.0 / static_cast<double>(1 + total);
+  }
   double sum = 0.0;
   for (std::size_t k = first; k < end; ++k) {
-    const std::int64_t v =
-        options.count == SafetyCount::count ? s[k] : (s[k] > 0 ? std::int64_t{1} : std::int64_t{0});
-    const std::int64_t S = options.safe == SafeNode::one ? 1 + v : v;
+    const std::int64_t S = options.safe == SafeNode::one ? 1 + hazard(k) : hazard(k);
     if (S == 0) continue;  // only under SafeNode::skip: a safe node adds nothing
     sum += 1.0 / static_cast<double>(S);
   }
+  if (options.aggregate == SafetyAggregate::mean)
+    return end > first ? sum / static_cast<double>(end - first) : 0.0;
   return sum;
 }
 

@@ -166,27 +166,42 @@ enum class SafetyNodes {
   all,           ///< every node
   interior,      ///< every node but the start and the goal
 };
+/// How the per-node hazards of Eq. (18) combine into fit_3 (spec shi2022.eq18, "Which aggregate").
+enum class SafetyAggregate {
+  inverse_total_plus_one,  ///< 1 / (1 + sum of the hazard counts); 1 for a path touching no obstacle
+                           ///< (the planners' default since issue 11, the convention of Eq. 16)
+  per_node,                ///< sum of 1/S_i over the nodes, as printed (grows with the node count)
+  mean,                    ///< the per_node sum divided by the number of nodes summed
+};
 /// Parsers; UsageError on unknown names. Spec: shi2022.eq18.
+[[nodiscard]] SafetyAggregate parse_safety_aggregate(std::string_view name);
 [[nodiscard]] SafetyCount parse_safety_count(std::string_view name);
 [[nodiscard]] SafeNode parse_safe_node(std::string_view name);
 [[nodiscard]] SafetyNodes parse_safety_nodes(std::string_view name);
 
 /// The readings of Eq. (18) together; the defaults are pathref's reading.
 struct SafetyOptions {
+  SafetyAggregate aggregate = SafetyAggregate::inverse_total_plus_one;
   SafetyCount count = SafetyCount::count;
   SafeNode safe = SafeNode::one;
   SafetyNodes nodes = SafetyNodes::all_but_goal;
   metrics::OutsideCells outside = metrics::OutsideCells::free;
 };
 
-/// Safety factor fit_3 = sum_i 1 / S_i (Eq. 18) over the selected nodes, left to right, with the
-/// per-node counts of metrics::safety_counts; each term evaluated 1.0 / S_i.
+/// Safety factor fit_3 of Eq. (18) over the selected nodes, from the per-node counts s_k of
+/// metrics::safety_counts (or their 0/1 indicator). Default (SafetyAggregate::inverse_total_plus_one):
+/// fit_3 = 1.0 / (1 + T) with the integer total T = sum_k s_k. per_node (as printed):
+/// fit_3 = sum_k 1.0 / S_k added left to right, S_k = 1 + s_k (SafeNode::one) or s_k (skip, a node
+/// with S_k = 0 adds nothing). mean: that sum divided by the number of nodes summed (0 if none).
 /// Source: Shi et al. 2022, Eq. (18) and the text after it, Sec. 4.4.2,
 /// doi:10.3389/fbioe.2022.905983.
 /// Spec: shi2022.eq18
 /// Pre: path non-empty, no consecutive repeats, every node inside g (DomainError).
-/// Post (defaults): each term in [1/9, 1]; fit_3 > 0 when n >= 2.
-/// Interpretation: SafetyCount, SafeNode, SafetyNodes, metrics::OutsideCells.
+/// Post (default): 0 < fit_3 <= 1, == 1 iff no summed node has a blocked neighbour, strictly
+/// decreasing in T; adding a node never increases it. Post (per_node, SafeNode::one): each term in
+/// [1/9, 1]; fit_3 > 0 when n >= 2. Post (mean, SafeNode::one): fit_3 in [1/9, 1] when n >= 2.
+/// Interpretation: SafetyAggregate, SafetyCount, SafeNode (per_node and mean only), SafetyNodes,
+/// metrics::OutsideCells.
 /// Golden: golden/shi2022/shi2022.eq18.json
 [[nodiscard]] double safety_factor(const grid::Grid& g, std::span<const grid::Cell> path,
                                    SafetyOptions options = SafetyOptions{});

@@ -31,6 +31,17 @@ std::string_view name_of(ga::SmoothnessReading v) {
   return "?";
 }
 std::string_view name_of(ga::SafetyCount v) { return v == ga::SafetyCount::count ? "count" : "indicator"; }
+std::string_view name_of(ga::SafetyAggregate v) {
+  switch (v) {
+    case ga::SafetyAggregate::inverse_total_plus_one:
+      return "inverse_total_plus_one";
+    case ga::SafetyAggregate::per_node:
+      return "per_node";
+    case ga::SafetyAggregate::mean:
+      return "mean";
+  }
+  return "?";
+}
 std::string_view name_of(ga::SafeNode v) { return v == ga::SafeNode::one ? "one" : "skip"; }
 std::string_view name_of(ga::SafetyNodes v) {
   switch (v) {
@@ -264,6 +275,7 @@ Json to_params(const Config& c) {
       {"c", c.weights.c},
       {"smoothness", std::string(name_of(c.smoothness))},
       {"penalties", Json::array({c.penalties.up_to_45, c.penalties.up_to_90, c.penalties.above_90})},
+      {"safety_aggregate", std::string(name_of(c.safety.aggregate))},
       {"safety_count", std::string(name_of(c.safety.count))},
       {"safe_node", std::string(name_of(c.safety.safe))},
       {"safety_nodes", std::string(name_of(c.safety.nodes))},
@@ -345,6 +357,7 @@ Config from_params(const Config& base, const Json& p) {
       throw UsageError("penalties must be an array of three numbers [P45, P90, P180]");
     c.penalties = ga::TurnPenalties{v[0].get<double>(), v[1].get<double>(), v[2].get<double>()};
   }
+  if (p.contains("safety_aggregate")) c.safety.aggregate = ga::parse_safety_aggregate(str("safety_aggregate"));
   if (p.contains("safety_count")) c.safety.count = ga::parse_safety_count(str("safety_count"));
   if (p.contains("safe_node")) c.safety.safe = ga::parse_safe_node(str("safe_node"));
   if (p.contains("safety_nodes")) c.safety.nodes = ga::parse_safety_nodes(str("safety_nodes"));

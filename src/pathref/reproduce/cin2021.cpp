@@ -619,10 +619,9 @@ std::string cin2021_markdown(const Json& doc, const std::string& figure_dir, con
     md += "\n## HGA-ACO against Shi's hybrids (a comparison neither paper makes)\n\n";
     md += "Not claims of either paper and not counted with them: the same rule, HGA-ACO against Shi's IHA and "
           "traditional hybrid on Shi's maps. The X3 rows compare different counts (HGA-ACO's ACO iteration, Shi's GA "
-          "generation). **Every X row against IHA depends on pathref's reading of Shi's Eq. 18**: under it IHA's "
-          "weighted fitness prefers long paths, so IHA returns paths far longer than its own colony's (the known "
-          "problem of docs/reproduction/shi2022.md and spec/shi2022-ga.md \"Measured\"); those rows say nothing "
-          "about Shi's IHA as the paper ran it until that reading is re-decided.\n\n";
+          "generation). The X rows against IHA rest on pathref's readings of Shi's weighted fitness (Eq. 16 and Eq. 18 "
+          "read as the reciprocal of 1 + the path's total penalty, decided in issue 11; under the printed per-node "
+          "sums IHA prefers long paths: docs/reproduction/shi2022.md, \"The weighted fitness under its readings\").\n\n";
     md += md_verdict_summary(doc.at("cross_paper")) + "\n";
     md += md_claims(doc.at("cross_paper"));
   }

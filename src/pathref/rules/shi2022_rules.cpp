@@ -286,17 +286,19 @@ void register_ga(Registry& r) {
       }});
   r.add(Rule{
       "shi2022.eq18",
-      "Safety factor fit_3 = sum 1/S_i from obstacles among the 8 neighbours (Shi Eq. 18)",
+      "Safety factor fit_3 from obstacles among the 8 neighbours (Shi Eq. 18): 1/(1 + total) by default",
       "pathref::ga::safety_factor",
       {{"grid", "grid", "rows top first"},
        {"path", "path", "the path, every node inside the grid"},
+       {"safety_aggregate", "string", "inverse_total_plus_one (default) | per_node (as printed) | mean"},
        {"safety_count", "string", "count (default) | indicator"},
-       {"safe_node", "string", "one (default) | skip"},
+       {"safe_node", "string", "one (default) | skip (per_node and mean only)"},
        {"safety_nodes", "string", "all_but_goal (default) | all | interior"},
        {"outside", "string", "free (default) | blocked (metrics.safety)"}},
       {{"fit3", "number", "the safety factor"}},
       [](const Json& in) {
         const ga::SafetyOptions o{
+            ga::parse_safety_aggregate(opt_string(in, "safety_aggregate", "inverse_total_plus_one")),
             ga::parse_safety_count(opt_string(in, "safety_count", "count")),
             ga::parse_safe_node(opt_string(in, "safe_node", "one")),
             ga::parse_safety_nodes(opt_string(in, "safety_nodes", "all_but_goal")),

@@ -283,7 +283,7 @@ def fit2(p, cfg):
 def fit3(m, p, cfg):
     n = len(p)
     idx = {"all_but_goal": range(0, n - 1), "all": range(0, n), "interior": range(1, n - 1)}[cfg["safety_nodes"]]
-    total = 0.0
+    hazards = []
     for k in idx:
         x, y = p[k]
         s = 0
@@ -295,10 +295,16 @@ def fit3(m, p, cfg):
                         s += not m.free(q)
                     elif cfg["outside"] == "blocked":
                         s += 1
-        v = s if cfg["safety_count"] == "count" else (1 if s > 0 else 0)
+        hazards.append(s if cfg["safety_count"] == "count" else (1 if s > 0 else 0))
+    if cfg["safety_aggregate"] == "inverse_total_plus_one":
+        return 1.0 / (1 + sum(hazards))
+    total = 0.0
+    for v in hazards:
         S = 1 + v if cfg["safe_node"] == "one" else v
         if S:
             total += 1.0 / S
+    if cfg["safety_aggregate"] == "mean":
+        return total / len(hazards) if hazards else 0.0
     return total
 
 
@@ -326,8 +332,8 @@ class Ind:
 
 GA_DEFAULTS = {
     "population": 200, "generations": 50, "fitness": "inverse_length", "a": 5.0, "b": 4.0, "c": 1.0,
-    "smoothness": "inverse_total_plus_one", "penalties": [5.0, 100.0, 1000.0], "safety_count": "count",
-    "safe_node": "one", "safety_nodes": "all_but_goal", "outside": "free",
+    "smoothness": "inverse_total_plus_one", "penalties": [5.0, 100.0, 1000.0],
+    "safety_aggregate": "inverse_total_plus_one", "safety_count": "count", "safe_node": "one", "safety_nodes": "all_but_goal", "outside": "free",
     "ga_probabilities": "fixed", "pc": 0.8, "pm": 0.1, "pm_max": 0.3, "pc_reading": "printed",
     "pm_reading": "printed", "pm_at_zero": "binary64", "ga_i_origin": 1, "duplicate_gene": "drop",
     "mid_rounding": "floor", "init_reject": "shift", "init_attempts": 100000,

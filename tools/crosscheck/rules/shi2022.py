@@ -400,6 +400,7 @@ def eq17(inp):
 def eq18(inp):
     g = _Grid(inp["grid"])
     path = _path(inp["path"])
+    aggregate = _choice(inp, "safety_aggregate", ["inverse_total_plus_one", "per_node", "mean"])
     count = _choice(inp, "safety_count", ["count", "indicator"])
     safe = _choice(inp, "safe_node", ["one", "skip"])
     nodes = _choice(inp, "safety_nodes", ["all_but_goal", "all", "interior"])
@@ -407,12 +408,17 @@ def eq18(inp):
     s = _safety_counts(g, path, outside)
     n = len(path)
     idx = {"all_but_goal": range(0, n - 1), "all": range(0, n), "interior": range(1, n - 1)}[nodes]
+    hazards = [s[k] if count == "count" else (1 if s[k] > 0 else 0) for k in idx]
+    if aggregate == "inverse_total_plus_one":
+        # the reciprocal of 1 + the path's total hazard, the convention of Eq. (16)
+        return {"fit3": 1.0 / (1 + sum(hazards))}
     total = 0.0
-    for k in idx:
-        v = s[k] if count == "count" else (1 if s[k] > 0 else 0)
+    for v in hazards:
         S = 1 + v if safe == "one" else v
         if S:
             total += 1.0 / S
+    if aggregate == "mean":
+        return {"fit3": total / len(hazards) if hazards else 0.0}
     return {"fit3": total}
 
 
