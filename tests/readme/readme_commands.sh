@@ -37,13 +37,19 @@ for s in lines:
 print("\n".join(cmds))
 PY
 cd "$tmp/repo"
-n=0 skipped=0
+n=0 skipped=0 skipped_outputs=""
 while IFS= read -r cmd; do
   case "$cmd" in
     "bash tools/test"*|"bash tools/demo"*) skipped=$((skipped + 1)); continue ;;
   esac
-  if [[ "$cmd" == *"../shared"* && $have_shared == 0 ]]; then
-    echo "SKIP (no ../shared/data): $cmd"; skipped=$((skipped + 1)); continue
+  # A command that reads a file written by a skipped command (out/...) is skipped too.
+  needs_skipped=0
+  for f in $skipped_outputs; do [[ " $cmd " == *" $f "* ]] && needs_skipped=1; done
+  if [[ "$cmd" == *"../shared"* && $have_shared == 0 ]] || [ $needs_skipped == 1 ]; then
+    echo "SKIP (no ../shared/data, or needs the output of a command skipped for it): $cmd"
+    skipped=$((skipped + 1))
+    skipped_outputs="$skipped_outputs $(grep -o 'out/[^ ]*' <<< "$cmd" | tr '\n' ' ' || true)"
+    continue
   fi
   n=$((n + 1))
   start=$(date +%s%N)
