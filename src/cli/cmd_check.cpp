@@ -249,13 +249,13 @@ int run_check(const CheckOptions& o) {
     results.push_back(std::move(c.j));
   }
   const std::size_t n = records.size();
-  const Json doc{{"format", "pathref-check"},
+  Json doc{{"format", "pathref-check"},
                  {"format_version", 1},
-                 {"pathref_version", PATHREF_VERSION},
                  {"map", map_json},
                  {"paths", results},
                  {"summary", {{"paths", n}, {"valid", n_valid}, {"invalid", n - n_valid},
                               {"length", summary_json(lengths)}, {"ratio", summary_json(ratios)}}}};
+  stamp_version(doc);
   if (!o.json_out.empty()) write_output_file(o.json_out, doc.dump(2) + "\n");
   if (o.json) {
     fmt::print("{}\n", doc.dump(2));

@@ -310,9 +310,8 @@ int run_conform(const ConformOptions& o) {
     total.skip += t.skip;
     rules_json[rule] = {{"pass", t.pass}, {"fail", t.fail}, {"skip", t.skip}};
   }
-  const Json doc{{"format", "pathref-conform-report"},
+  Json doc{{"format", "pathref-conform-report"},
                  {"format_version", 1},
-                 {"pathref_version", PATHREF_VERSION},
                  {"exec", o.exec},
                  {"golden", o.dir},
                  {"rules_glob", o.rules},
@@ -321,6 +320,7 @@ int run_conform(const ConformOptions& o) {
                  {"rules", rules_json},
                  {"first_failure", first_failure},
                  {"cases", cases}};
+  stamp_version(doc);
   if (!o.json_out.empty()) write_output_file(o.json_out, doc.dump(2) + "\n");
   if (o.json) {
     fmt::print("{}\n", doc.dump(2));

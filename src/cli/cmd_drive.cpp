@@ -268,10 +268,13 @@ int run_drive(const DriveOptions& o) {
   const auto base = vehicle::parse_base(o.base);
   const vehicle::PathTime pt = vehicle::path_time(*path, o.cell, base, p);
   const auto ks = vehicle::schedule(pt, p);
-  if (o.json)
-    fmt::print("{}\n", result_json(o, p, pt, ks, path->size()).dump(2));
-  else
+  if (o.json) {
+    Json doc = result_json(o, p, pt, ks, path->size());
+    stamp_version(doc);
+    fmt::print("{}\n", doc.dump(2));
+  } else {
     print_report(o, p, pt, ks, path->size());
+  }
   if (!o.svg_file.empty()) {
     write_output_file(o.svg_file, profile_svg(pt, ks));
     if (!o.json) fmt::print("wrote {}\n", o.svg_file);

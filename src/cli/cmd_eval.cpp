@@ -6,6 +6,7 @@
 
 #include "commands.hpp"
 #include "pathref/core/error.hpp"
+#include "pathref/core/version.hpp"
 #include "pathref/rules/registry.hpp"
 
 namespace pathref::cli {
@@ -47,6 +48,21 @@ void reject_unknown_inputs(const rules::Rule& rule, const rules::Json& input) {
   }
 }
 
+/// A reconstructed rule (cin2021, sensors2023) carries "grade" and "reconstructed": true
+/// (spec/index/*.json; docs/versioning.md#confidence-grades); a paper's own equation carries neither.
+void add_grade(rules::Json& doc, const std::string& id) {
+  if (const auto g = reconstruction_grade(id)) {
+    doc["grade"] = std::string(1, *g);
+    doc["reconstructed"] = true;
+  }
+}
+
+/// "  [grade B, reconstructed]" for a reconstructed rule, "" otherwise (the text of eval --list).
+std::string grade_tag(const std::string& id) {
+  const auto g = reconstruction_grade(id);
+  return g ? fmt::format("  [grade {}, reconstructed]", *g) : std::string();
+}
+
 rules::Json fields_json(const std::vector<rules::Field>& fields) {
   rules::Json a = rules::Json::array();
   for (const auto& f : fields) a.push_back({{"name", f.name}, {"type", f.type}, {"doc", f.doc}});
@@ -57,13 +73,18 @@ rules::Json fields_json(const std::vector<rules::Field>& fields) {
 
 rules::Json rule_list_json() {
   rules::Json list = rules::Json::array();
-  for (const auto& r : rules::registry().all())
-    list.push_back({{"id", r.id},
-                    {"summary", r.summary},
-                    {"function", r.function},
-                    {"inputs", fields_json(r.inputs)},
-                    {"outputs", fields_json(r.outputs)}});
-  return {{"format", "pathref-rules"}, {"format_version", 1}, {"pathref_version", PATHREF_VERSION}, {"rules", list}};
+  for (const auto& r : rules::registry().all()) {
+    rules::Json entry{{"id", r.id},
+                      {"summary", r.summary},
+                      {"function", r.function},
+                      {"inputs", fields_json(r.inputs)},
+                      {"outputs", fields_json(r.outputs)}};
+    add_grade(entry, r.id);
+    list.push_back(std::move(entry));
+  }
+  rules::Json doc{{"format", "pathref-rules"}, {"format_version", 1}, {"rules", list}};
+  stamp_version(doc);
+  return doc;
 }
 
 void add_eval_command(CLI::App& app, Action& run) {
@@ -86,7 +107,7 @@ void add_eval_command(CLI::App& app, Action& run) {
       }
       if (list) {
         for (const auto& r : reg.all()) {
-          fmt::print("{}  {}\n", r.id, r.summary);
+          fmt::print("{}{}  {}\n", r.id, grade_tag(r.id), r.summary);
           for (const auto& f : r.inputs) fmt::print("    in  {} : {} - {}\n", f.name, f.type, f.doc);
           for (const auto& f : r.outputs) fmt::print("    out {} : {} - {}\n", f.name, f.type, f.doc);
         }
@@ -99,7 +120,10 @@ void add_eval_command(CLI::App& app, Action& run) {
       const rules::Json input = parse_assignments(assignments);
       reject_unknown_inputs(*rule, input);
       const rules::Json out = rule->eval(input);
-      fmt::print("{}\n", rules::Json{{"rule", rule->id}, {"input", input}, {"output", out}}.dump(2));
+      rules::Json doc{{"rule", rule->id}, {"input", input}, {"output", out}};
+      add_grade(doc, rule->id);
+      stamp_version(doc);
+      fmt::print("{}\n", doc.dump(2));
       return 0;
     };
   });

@@ -25,6 +25,12 @@ namespace {
 using Json = nlohmann::json;
 using namespace pathref::ml;
 
+/// `doc` with pathref_version and golden_set_version set (docs/versioning.md).
+Json stamped(Json doc) {
+  stamp_version(doc);
+  return doc;
+}
+
 struct LearnOptions {
   std::string data;
   std::string classifiers = "all";
@@ -190,7 +196,7 @@ int run_learn(const LearnOptions& o) {
         if (folds[i] != test_id) train_rows.push_back(i);
       const Model m = train(kind, subset(d, train_rows), params);
       if (const auto* t = std::get_if<Tree>(&m.model)) tied_nodes += t->tied_splits;
-      if (!o.save_model.empty() && f == 0 && o.cv.empty()) write_output_file(o.save_model, to_json(m).dump() + "\n");
+      if (!o.save_model.empty() && f == 0 && o.cv.empty()) write_output_file(o.save_model, stamped(to_json(m)).dump() + "\n");
       for (std::size_t i = 0; i < d.rows(); ++i)
         if (folds[i] == test_id) {
           pred[i] = predict(m, d.row(i));
@@ -214,8 +220,10 @@ int run_learn(const LearnOptions& o) {
   }
   if (!o.save_model.empty() && !o.cv.empty()) {
     // with --cv the saved model is trained on every row (the last classifier given)
-    write_output_file(o.save_model, to_json(train(kinds.back(), d, params)).dump() + "\n");
+    write_output_file(o.save_model, stamped(to_json(train(kinds.back(), d, params))).dump() + "\n");
   }
+  stamp_version(doc);
+  stamp_version(preds);
   if (!o.predictions.empty()) write_output_file(o.predictions, preds.dump() + "\n");
   if (o.json) fmt::print("{}\n", doc.dump(1));
   return 0;
@@ -241,7 +249,7 @@ int run_classify(const ClassifyOptions& o) {
   const std::string name = static_cast<std::size_t>(c) < wall_following_labels.size()
                                ? std::string(wall_following_labels[static_cast<std::size_t>(c)]) : std::to_string(c);
   if (o.json) {
-    fmt::print("{}\n", Json{{"class", c}, {"label", name}, {"classifier", to_string(m.kind)}, {"input", x}}.dump());
+    fmt::print("{}\n", stamped(Json{{"class", c}, {"label", name}, {"classifier", to_string(m.kind)}, {"input", x}}).dump());
   } else {
     fmt::print("{} {}\n", c, name);
   }

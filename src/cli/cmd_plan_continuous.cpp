@@ -197,7 +197,6 @@ int run_continuous_plan(const ContinuousPlanArgs& o) {
   Json j{{"format", "pathref-plan"},
          {"format_version", 2},
          {"space", "continuous"},
-         {"pathref_version", PATHREF_VERSION},
          {"algo", o.algo},
          {"seed", seed},
          {"params", run.params_used},
@@ -216,6 +215,7 @@ int run_continuous_plan(const ContinuousPlanArgs& o) {
          {"tree", Json{{"nodes", points_json(run.tree.nodes)}, {"parent", run.tree.parent}}},
          {"raw_path", points_json(run.raw)},
          {"raw", run.tree.found ? metrics_json(run.raw_metrics) : Json(nullptr)}};
+  stamp_version(j);
   if (o.algo == "s-rrt") {
     j["shortcut_path"] = points_json(run.shortcut_path);
     j["shortcut_kept"] = run.kept;

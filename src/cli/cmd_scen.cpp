@@ -182,7 +182,7 @@ int run_scen(const ScenOptions& o) {
     Json j;
     j["format"] = "pathref-scen";
     j["format_version"] = 1;
-    j["pathref_version"] = PATHREF_VERSION;
+    stamp_version(j);
     j["file"] = o.file;
     j["scen_version"] = sf.version;
     j["algo"] = o.algo;

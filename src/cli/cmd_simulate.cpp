@@ -39,6 +39,7 @@ int run_fused(const SimulateOptions& o, const std::string& text, const std::stri
   if (o.json) {
     dwa::Json j = dwa::to_json(r, o.full);
     j["params"] = dwa::params_json(s);
+    stamp_version(j);
     fmt::print("{}\n", j.dump());
   } else {
     fmt::print("scenario: {} (pathref-sim 2: sensors2023 global path + following DWA)\n", o.scenario);
@@ -77,7 +78,9 @@ int run_simulate(const SimulateOptions& o) {
   }
   const sim::SimResult r = sim::simulate(s);
   if (o.json) {
-    fmt::print("{}\n", sim::to_json(r, o.full).dump());
+    sim::Json j = sim::to_json(r, o.full);
+    stamp_version(j);
+    fmt::print("{}\n", j.dump());
   } else {
     if (!r.global_found) {
       fmt::print("global path: none ({})\n", s.path.empty() ? s.planner : std::string("given path"));

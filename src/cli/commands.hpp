@@ -53,6 +53,10 @@ void add_reproduce_cin2021_ml(CLI::App* reproduce, Action& run);
 /// `cannot write 'F': REASON` when it cannot (spec/cli.md#output-files). Defined in output.cpp.
 void write_output_file(const std::string& path, const std::string& text);
 
+/// Sets "pathref_version" and "golden_set_version" on the JSON object `doc` (every JSON document
+/// pathref prints or writes carries both: docs/versioning.md). Defined in output.cpp.
+void stamp_version(nlohmann::json& doc);
+
 /// The map of a run and where it came from.
 struct RunMap {
   io::MapFile map;

@@ -6,6 +6,7 @@
 
 #include "commands.hpp"
 #include "pathref/core/error.hpp"
+#include "pathref/core/version.hpp"
 #include "pathref/geometry/inflation.hpp"
 #include "pathref/geometry/obstacles.hpp"
 
@@ -17,7 +18,9 @@ int main(int argc, char** argv) {
   CLI::App app{"pathref " PATHREF_VERSION
                " - formally specified reference implementation of grid path planners"};
   app.require_subcommand(1);
-  app.set_version_flag("--version", PATHREF_VERSION);
+  // --version: pathref's version and the golden-vector set it was built with (docs/versioning.md).
+  app.set_version_flag("--version", std::string(pathref::version()) + " (golden vectors " +
+                                        std::string(pathref::golden_set_version()) + ")");
   pathref::cli::Action run;
   pathref::cli::add_plan_commands(app, run);
   pathref::cli::add_eval_command(app, run);

@@ -8,6 +8,7 @@
 
 #include "commands.hpp"
 #include "pathref/core/error.hpp"
+#include "pathref/core/version.hpp"
 
 namespace pathref::cli {
 
@@ -28,6 +29,11 @@ void write_output_file(const std::string& path, const std::string& text) {
   out << text;
   out.close();
   if (!out) throw UsageError("cannot write '" + path + "': " + (errno != 0 ? std::strerror(errno) : "write failed"));
+}
+
+void stamp_version(nlohmann::json& doc) {
+  doc["pathref_version"] = std::string(pathref::version());
+  doc["golden_set_version"] = std::string(pathref::golden_set_version());
 }
 
 }  // namespace pathref::cli

@@ -332,6 +332,12 @@ SrrtReproduction reproduce_cin2021_srrt(const SrrtReproduceOptions& o) {
                  {"claims", claims},
                  {"reading_claims", reading_claims},
                  {"checks", checks}};
+  // Every verdict rests on the reconstructed S-RRT (attach_rules; reproduce.markdown).
+  const auto srrt_rules = [](const std::string&) {
+    return std::vector<std::string>{"cin2021.srrt.collision", "cin2021.srrt.nearest", "cin2021.srrt.steer",
+                                    "cin2021.alg1", "cin2021.alg2", "cin2021.srrt.metrics"};
+  };
+  for (const char* k : {"claims", "reading_claims", "checks"}) attach_rules_all(out.doc[k], srrt_rules);
   // Figure 6's analogue: per run, S-RRT and RRT on every scene (first n runs; gaps where no path).
   struct Fig {
     const char* file;

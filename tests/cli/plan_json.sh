@@ -14,7 +14,7 @@ import json, math, sys
 import xml.etree.ElementTree as ET
 
 d = json.load(open(sys.argv[1]))
-required = ["format", "format_version", "pathref_version", "algo", "seed", "policy", "params",
+required = ["format", "format_version", "pathref_version", "golden_set_version", "algo", "seed", "policy", "params",
             "map", "found", "start", "goal", "path", "length", "turns", "valid", "validation",
             "expansions", "iterations", "best_per_iteration", "mean_per_iteration",
             "converged_at", "extra"]

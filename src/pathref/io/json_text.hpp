@@ -17,7 +17,10 @@ namespace pathref::io {
 [[nodiscard]] std::pair<std::size_t, std::size_t> line_column(std::string_view text, std::size_t byte);
 
 /// Parses `text` as strict JSON; a syntax error is a ParseError `FILE:LINE:COLUMN: invalid JSON
-/// (...)` at the byte where the parser stopped. `file` is only used in the message.
-[[nodiscard]] nlohmann::json parse_json_text(std::string_view text, std::string_view file);
+/// (...)` at the byte where the parser stopped, and so is a number too large for a double
+/// (nlohmann's out_of_range 406, which carries no position of its own). `file` is only used in the
+/// message; `first_line` is the line of the file on which `text` begins (JSON-lines files).
+[[nodiscard]] nlohmann::json parse_json_text(std::string_view text, std::string_view file,
+                                             std::size_t first_line = 1);
 
 }  // namespace pathref::io

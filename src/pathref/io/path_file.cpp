@@ -269,12 +269,7 @@ std::vector<PathRecord> parse_path_text(std::string_view text, std::string_view 
       if (nl == std::string_view::npos) nl = text.size();
       const std::string_view l = text.substr(at, nl - at);
       if (l.find_first_not_of(" \t\r") != std::string_view::npos) {
-        Json doc;
-        try {
-          doc = Json::parse(l.begin(), l.end());
-        } catch (const Json::parse_error& e) {  // e.byte: the 1-based byte of the line where it stopped
-          throw ParseError(file, line, e.byte == 0 ? 1 : e.byte, "invalid JSON (" + std::string(e.what()) + ")");
-        }
+        const Json doc = parse_json_text(l, file, line);
         out.push_back(read_json_value(doc, file + ":" + std::to_string(line), file, line, format));
       }
       at = nl + 1;

@@ -1,5 +1,7 @@
 #include "pathref/io/plan_json.hpp"
 
+#include "pathref/core/version.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <span>
@@ -70,7 +72,8 @@ Json plan_to_json(const PlanRecord& run, const grid::Grid& g) {
               {"rows", g.to_rows_top_first()}};
   return Json{{"format", "pathref-plan"},
               {"format_version", 1},
-              {"pathref_version", PATHREF_VERSION},
+              {"pathref_version", std::string(pathref::version())},
+              {"golden_set_version", std::string(pathref::golden_set_version())},
               {"algo", run.algo},
               {"seed", run.seed},
               {"policy", std::string(grid::to_string(run.policy))},

@@ -135,6 +135,22 @@ const std::vector<std::string>& cin2021_shi_planners() {
 
 namespace {
 
+/// The reconstructed rules (spec/index) a claim "Ck.MAP.RIVAL[@reading|/total]" rests on (attach_rules;
+/// reproduce.markdown): HGA-ACO's planner, the rival's when it is cin2021's own GA or ACO (Shi's
+/// planners are not reconstructions), and the metric: C1 length (Eq. 19), C4 smoothness (Eq. 17-18).
+std::vector<std::string> cin2021_claim_rules(const std::string& id) {
+  std::vector<std::string> r{"cin2021.plan.hga-aco"};
+  const std::string base = id.substr(0, id.find_first_of("@/"));
+  if (base.ends_with(".aco-cin")) r.emplace_back("cin2021.plan.aco");
+  if (base.ends_with(".ga-cin")) r.emplace_back("cin2021.plan.ga");
+  if (base.rfind("C1.", 0) == 0 || base.rfind("X1.", 0) == 0) r.emplace_back("cin2021.eq19");
+  if (base.rfind("C4.", 0) == 0 || base.rfind("X4.", 0) == 0) {
+    r.emplace_back("cin2021.eq17");
+    r.emplace_back("cin2021.eq18");
+  }
+  return r;
+}
+
 /// "HGA-ACO", "ACO", "GA" for cin2021's planners; planner_label otherwise.
 std::string cin_label(const std::string& name) {
   if (name == hga) return "HGA-ACO";
@@ -432,6 +448,7 @@ Json run_cin2021(const CinConfig& cfg) {
   doc["claims"] = to_json(claims);
   doc["reading_claims"] = to_json(reading_claims);
   doc["cross_paper"] = to_json(cross);
+  for (const char* k : {"claims", "reading_claims", "cross_paper"}) attach_rules_all(doc[k], cin2021_claim_rules);
   Json rd = Json::array();
   for (const Reading& r : readings())
     rd.push_back(Json{{"key", r.key}, {"param", r.param}, {"value", r.value}, {"default", r.default_text},

@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 #include <span>
+#include <stdexcept>
 
 #include "pathref/core/error.hpp"
 #include "pathref/ml/classifier.hpp"
@@ -15,6 +16,20 @@
 
 namespace pathref::reproduce {
 namespace {
+
+/// The reconstructed rules (spec/index) a claim "CLASSIFIER-PROTOCOL[@reading]" rests on
+/// (attach_rules; reproduce.markdown): the data, the split (cin2021.folds), accuracy (Eq. 7) and
+/// the classifier's own rules.
+std::vector<std::string> cin2021_ml_claim_rules(const std::string& id) {
+  std::vector<std::string> r{"cin2021.data", "cin2021.folds", "cin2021.eq7"};
+  const std::string c = id.substr(0, id.find('-'));
+  if (c == "rf") r.insert(r.end(), {"cin2021.gini", "cin2021.eq6"});
+  else if (c == "knn") r.insert(r.end(), {"cin2021.eq4", "cin2021.knn"});
+  else if (c == "svm") r.insert(r.end(), {"cin2021.eq2", "cin2021.eq3"});
+  else if (c == "gnb" || c == "mnb") r.emplace_back("cin2021.eq1");
+  else throw std::logic_error("cin2021_ml_claim_rules: unknown classifier in claim id '" + id + "'");
+  return r;
+}
 
 using namespace pathref::ml;
 
@@ -319,6 +334,8 @@ Json run_cin2021_ml(const Cin2021MlConfig& cfg) {
            {"reading_claims", to_json(alternatives)},
            {"sklearn", cfg.sklearn},
            {"provenance", provenance_json(cfg.provenance)}};
+  attach_rules_all(doc["claims"], cin2021_ml_claim_rules);
+  attach_rules_all(doc["reading_claims"], cin2021_ml_claim_rules);
   doc["provenance"]["total_wall_s"] = seconds_since(t_all);
   return doc;
 }

@@ -1,9 +1,13 @@
 #include "pathref/reproduce/report.hpp"
 
+#include "pathref/core/version.hpp"
+
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
+#include <stdexcept>
 #include <tuple>
 
 namespace pathref::reproduce {
@@ -14,6 +18,7 @@ Json provenance_json(const Provenance& p) {
               {"date_utc", p.date_utc},
               {"machine", p.machine},
               {"pathref_version", p.pathref_version},
+              {"golden_set_version", std::string(pathref::golden_set_version())},
               {"jobs", p.jobs},
               {"execution", p.execution}};
 }
@@ -43,6 +48,24 @@ Json claim_json(const Claim& c) {
               {"statistics", c.statistics},
               {"depends_on", c.depends_on},
               {"note", c.note}};
+}
+
+void attach_rules(Json& claim, const std::vector<std::string>& rule_ids) {
+  Json rules = Json::array();
+  char lowest = 'A';
+  for (const std::string& id : rule_ids) {
+    const auto g = reconstruction_grade(id);
+    if (!g) throw std::logic_error("attach_rules: '" + id + "' is not a graded (reconstructed) rule in spec/index");
+    lowest = std::max(lowest, *g);  // 'C' > 'B' > 'A': the lowest confidence
+    rules.push_back(Json{{"id", id}, {"grade", std::string(1, *g)}});
+  }
+  if (rule_ids.empty()) throw std::logic_error("attach_rules: claim " + claim.value("id", std::string()) + " names no rule");
+  claim["rules"] = rules;
+  claim["grade"] = std::string(1, lowest);
+}
+
+void attach_rules_all(Json& claims, const std::function<std::vector<std::string>(const std::string& id)>& rules_for) {
+  for (Json& c : claims) attach_rules(c, rules_for(c.at("id").get<std::string>()));
 }
 
 std::string verdict_change_note(Verdict at_n, Direction dir_n, Verdict at_2n, Direction dir_2n) {
@@ -297,10 +320,29 @@ std::string md_row(const std::vector<std::string>& cells) {
   return s + "\n";
 }
 
+namespace {
+
+/// The grade cell of a claim: "C (r1, r2)" naming the rules at the lowest grade, or "" when ungraded.
+std::string md_grade(const Json& c) {
+  const Json& g = at_or_null(c, {"grade"});
+  if (!g.is_string()) return "";
+  std::string at_lowest;
+  for (const Json& r : c.at("rules"))
+    if (r.at("grade") == g) at_lowest += (at_lowest.empty() ? "" : ", ") + r.at("id").get<std::string>();
+  return g.get<std::string>() + " (" + at_lowest + ")";
+}
+
+}  // namespace
+
 std::string md_claims(const Json& claims) {
-  std::string s = md_row({"id", "claim", "source", "paper", "pathref (n runs)", "verdict at n", "verdict at 2n",
-                          "decided by / note"});
-  s += md_row({"---", "---", "---", "---", "---", "---", "---", "---"});
+  // A table of a reconstructed paper's claims (cin2021, sensors2023) has a grade column.
+  bool graded = false;
+  for (const Json& c : claims) graded = graded || at_or_null(c, {"grade"}).is_string();
+  std::vector<std::string> head{"id", "claim", "source", "paper", "pathref (n runs)", "verdict at n", "verdict at 2n",
+                                "decided by / note"};
+  if (graded) head.insert(head.begin() + 1, "grade ‡");
+  std::string s = md_row(head);
+  s += md_row(std::vector<std::string>(head.size(), "---"));
   for (const Json& c : claims) {
     const std::string text = c.value("verdict_text", c.at("verdict").get<std::string>());
     const std::string v = c.at("verdict").get<std::string>();
@@ -322,9 +364,15 @@ std::string md_claims(const Json& claims) {
       for (const Json& x : deps) d += (d.empty() ? "" : "; ") + x.get<std::string>();
       rule += (rule.empty() ? "" : "; ") + std::string("† depends on ") + d;
     }
-    s += md_row({id, c.at("text").get<std::string>(), c.at("source").get<std::string>(),
-                 c.at("paper").get<std::string>(), c.at("ours").get<std::string>(), verdict, at2, rule});
+    std::vector<std::string> row{id, c.at("text").get<std::string>(), c.at("source").get<std::string>(),
+                                 c.at("paper").get<std::string>(), c.at("ours").get<std::string>(), verdict, at2, rule};
+    if (graded) row.insert(row.begin() + 1, md_grade(c));
+    s += md_row(row);
   }
+  if (graded)
+    s += "\n‡ grade: the lowest confidence grade (A, B or C; spec/index) of the reconstructed rules this verdict rests "
+         "on, and those rules: the paper's equations were lost in extraction, so the verdict judges pathref's "
+         "reconstruction, not the printed equation (docs/versioning.md#confidence-grades).\n";
   return s;
 }
 
@@ -362,7 +410,9 @@ std::string md_verdict_summary(const Json& claims, bool checks) {
 std::string md_provenance(const Json& p, const std::string& out_name) {
   std::string s;
   s += fmt::format("- command: `{}`\n", p.value("command", ""));
-  s += fmt::format("- pathref {}, build type {}\n", p.value("pathref_version", ""), p.value("build_type", ""));
+  const std::string golden = p.value("golden_set_version", "");
+  s += fmt::format("- pathref {}{}, build type {}\n", p.value("pathref_version", ""),
+                   golden.empty() ? std::string() : " (golden vectors " + golden + ")", p.value("build_type", ""));
   s += fmt::format("- date (UTC): {}\n", p.value("date_utc", ""));
   s += fmt::format("- machine: {}\n", p.value("machine", ""));
   if (p.contains("total_wall_s") && p.at("total_wall_s").is_number())

@@ -55,6 +55,15 @@ struct Claim {
   Json statistics = nullptr;          ///< {"n": value_json | comparison_json, "2n": ...}
   std::vector<std::string> depends_on{};  ///< e.g. "reading converge=ga_phase (alternative: T3.8w)"
 };
+/// The reconstructed rules a claim's verdict rests on (cin2021, sensors2023: equations lost in
+/// extraction, graded A/B/C in spec/index; docs/versioning.md#confidence-grades): sets the claim's
+/// "rules" to [{"id", "grade"}] and its "grade" to the lowest of them (C below B below A). Every id
+/// must be a graded rule (std::logic_error otherwise: a report that names a wrong rule is a bug).
+/// Spec: reproduce.markdown.
+void attach_rules(Json& claim, const std::vector<std::string>& rule_ids);
+/// attach_rules(c, rules_for(c["id"])) for every claim of the array `claims`.
+void attach_rules_all(Json& claims, const std::function<std::vector<std::string>(const std::string& id)>& rules_for);
+
 /// {"id", "text", "source", "paper", "ours", "rule", "verdict" (to_string), "direction",
 /// "verdict_text", "at_2n": {"verdict", "direction", "verdict_text", "ours"} | null, "changed",
 /// "change_note", "statistics", "depends_on", "note"}. Spec: reproduce.json.

@@ -426,6 +426,29 @@ std::string paired_text(const Json& st) {
 
 /// A "reduces by P %" claim on paired maps (spec "Reproduction"): paired bootstrap interval of the
 /// reduction within P +- 5 points, at n and at 2n maps.
+/// The reconstructed rules (spec/index) each claim's verdict rests on (attach_rules; reproduce.markdown):
+/// the child-node claims on the search (Eq. 1-3, Eq. 4 for the whole improved search), the
+/// redundancy and global-length claims on the kinematic planner (Eq. 1-5), the curve on the
+/// B-spline (Eq. 6-8, A1-A3), and every Table 2-4 claim on the planner, the DWA and the simulation.
+std::vector<std::string> sensors2023_claim_rules(const std::string& id) {
+  const std::vector<std::string> search{"sensors2023.eq1", "sensors2023.eq2", "sensors2023.eq3"};
+  auto with = [](std::vector<std::string> a, const std::vector<std::string>& b) {
+    a.insert(a.end(), b.begin(), b.end());
+    return a;
+  };
+  const auto planner = with(search, {"sensors2023.eq4", "sensors2023.eq5", "sensors2023.plan.astar-kinematic"});
+  const std::vector<std::string> curve{"sensors2023.eq6", "sensors2023.eq7", "sensors2023.eq8",
+                                       "sensors2023.a1",  "sensors2023.a2",  "sensors2023.a3"};
+  if (id == "s23.children" || id == "s23.children.scene") return search;
+  if (id == "s23.children.full") return with(search, {"sensors2023.eq4"});
+  if (id.rfind("s23.redundancy", 0) == 0 || id == "s23.global.length") return planner;
+  if (id == "s23.global.length.curve") return with(planner, curve);
+  return with(planner, {"sensors2023.eq9", "sensors2023.eq10", "sensors2023.eq11", "sensors2023.eq12",
+                        "sensors2023.eq13", "sensors2023.eq14", "sensors2023.dwa.clearance", "sensors2023.dwa.step",
+                        "sensors2023.dwa.follow", "sensors2023.sim.obstacles", "sensors2023.sim.collision",
+                        "sensors2023.sim.turns", "sensors2023.sim.run"});
+}
+
 Claim paired_reduction_claim(Claim c, const Pairs& pn, const Pairs& p2n, double paper, const BootstrapOptions& o) {
   const double m = equivalence_margin(Quantity::percent, paper);
   c.paper = fmt::format("{} %", paper);
@@ -1007,6 +1030,7 @@ Json run_sensors2023(const Sensors2023Config& cfg) {
                                             tr / static_cast<double>(k), gt / static_cast<double>(k), k)};
              },
              {}, "turns of the track by sensors2023.sim.turns");
+  attach_rules_all(claims, sensors2023_claim_rules);
   doc["claims"] = claims;
   doc["provenance"]["total_wall_s"] =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
