@@ -18,6 +18,7 @@
 #include "pathref/io/svg.hpp"
 #include "pathref/planners/default_policy.hpp"
 #include "pathref/planners/planner.hpp"
+#include "pathref/rng/trace.hpp"
 
 namespace pathref::cli {
 
@@ -61,6 +62,7 @@ struct PlanOptions {
   bool json = false;
   std::string json_out;
   std::string svg;
+  std::string trace;  ///< --trace FILE (spec/rng.md#draw-traces)
   MapReadArgs read;  ///< --format, --swamp, --water, --max-side, --max-cells (spec/formats.md#cli-map-options)
 };
 
@@ -263,6 +265,7 @@ int run_plan(const PlanOptions& o) {
     a.json = o.json;
     a.json_out = o.json_out;
     a.svg = o.svg;
+    a.trace = o.trace;
     a.read = o.read;
     return run_continuous_plan(a);
   }
@@ -302,8 +305,11 @@ int run_plan(const PlanOptions& o) {
   req.policy = policy;
   req.seed = seed;
   req.params = overrides;
+  rng::Trace trace;
+  if (!o.trace.empty()) req.trace = &trace;
   io::PlanRecord rec{o.algo, req.seed, req.policy, lm.source, start, goal, merged, planner->run(req)};
   if (!rec.result.params_used.empty()) rec.params = rec.result.params_used;
+  if (!o.trace.empty()) write_trace_file(o.trace, trace, seed, o.algo, rec.params);
 
   const Json j = io::plan_to_json(rec, g);
   // Files first: a file that cannot be written is an error (exit 2) before anything is printed.
@@ -316,6 +322,7 @@ int run_plan(const PlanOptions& o) {
   if (!o.json) {
     if (!o.json_out.empty()) fmt::print("wrote {}\n", o.json_out);
     if (!o.svg.empty()) fmt::print("wrote {}\n", o.svg);
+    if (!o.trace.empty()) fmt::print("wrote {} ({} draws)\n", o.trace, trace.draws().size());
   }
   return rec.result.found ? 0 : 1;
 }
@@ -418,6 +425,10 @@ void add_plan_commands(CLI::App& app, Action& run) {
   plan->add_flag("--json", o.json, "print one JSON object (schema pathref-plan 1) instead of the report");
   plan->add_option("--json-out", o.json_out, "also write the JSON object to FILE")->type_name("FILE");
   plan->add_option("--svg", o.svg, "write an SVG figure: map, obstacles, S, T, path, legend (+ convergence)")
+      ->type_name("FILE");
+  plan->add_option("--trace", o.trace,
+                   "write every random draw (index, value, purpose, context) as JSON lines to FILE "
+                   "(spec/rng.md#draw-traces; compare two with pathref trace-diff)")
       ->type_name("FILE");
   plan->callback([&run, start_opt, goal_opt, start_xy_opt, goal_xy_opt, policy_opt] {
     if (start_opt->count() > 0) o.start = start_text;

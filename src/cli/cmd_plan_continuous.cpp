@@ -21,6 +21,7 @@
 #include "pathref/io/svg.hpp"
 #include "pathref/io/svg_continuous.hpp"
 #include "pathref/planners/planner.hpp"
+#include "pathref/rng/trace.hpp"
 
 namespace pathref::cli {
 
@@ -193,7 +194,10 @@ int run_continuous_plan(const ContinuousPlanArgs& o) {
     throw UsageError(fmt::format("goal {} is not free (outside the world or within r of an obstacle)", fmt_pt(goal)));
   if (start == goal) throw UsageError(fmt::format("start and goal are the same point {}: there is nothing to plan", fmt_pt(start)));
 
-  const continuous::ContinuousRun run = continuous::run_continuous(o.algo, om, start, goal, merged, seed);
+  rng::Trace trace;
+  const continuous::ContinuousRun run =
+      continuous::run_continuous(o.algo, om, start, goal, merged, seed, o.trace.empty() ? nullptr : &trace);
+  if (!o.trace.empty()) write_trace_file(o.trace, trace, seed, o.algo, run.params_used);
   Json j{{"format", "pathref-plan"},
          {"format_version", 2},
          {"space", "continuous"},
@@ -263,6 +267,7 @@ int run_continuous_plan(const ContinuousPlanArgs& o) {
     fmt::print("  time        {:.3f} ms\n", run.time_ms);
     if (!o.json_out.empty()) fmt::print("wrote {}\n", o.json_out);
     if (!o.svg.empty()) fmt::print("wrote {}\n", o.svg);
+    if (!o.trace.empty()) fmt::print("wrote {} ({} draws)\n", o.trace, trace.draws().size());
   }
   return run.tree.found ? 0 : 1;
 }

@@ -12,6 +12,10 @@
 #include "pathref/io/map_file.hpp"
 #include "pathref/io/plan_json.hpp"
 
+namespace pathref::rng {
+class Trace;  // rng/trace.hpp
+}  // namespace pathref::rng
+
 namespace pathref::cli {
 
 /// A subcommand's body; returns the process exit code.
@@ -57,6 +61,12 @@ void write_output_file(const std::string& path, const std::string& text);
 /// pathref prints or writes carries both: docs/versioning.md). Defined in output.cpp.
 void stamp_version(nlohmann::json& doc);
 
+/// Writes the draw trace of a run of `algo` with `seed` and parameters `params` to `path`
+/// (spec/rng.md#draw-traces). Defined in cmd_trace.cpp.
+void write_trace_file(const std::string& path, const rng::Trace& trace, std::uint32_t seed, const std::string& algo,
+                      const nlohmann::json& params);
+void add_trace_diff_command(CLI::App& app, Action& run);  // trace-diff (spec/rng.md#draw-traces)
+
 /// The map of a run and where it came from.
 struct RunMap {
   io::MapFile map;
@@ -87,6 +97,7 @@ struct ContinuousPlanArgs {
   bool json = false;
   std::string json_out;
   std::string svg;
+  std::string trace;  ///< --trace FILE
   MapReadArgs read;
 };
 /// Runs it: exit 0 when a path was found, 1 when not.

@@ -34,6 +34,7 @@ int main(int argc, char** argv) {
   pathref::cli::add_simulate_command(app, run);
   pathref::cli::add_reproduce_command(app, run);
   pathref::cli::add_learn_commands(app, run);
+  pathref::cli::add_trace_diff_command(app, run);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

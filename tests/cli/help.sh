@@ -31,6 +31,8 @@ help eval -- --list --json rule
 help golden -- check regenerate
 help golden check -- --verbose dir
 help golden regenerate -- dir
+help trace-diff -- --context a b
+help plan -- --trace
 "$pathref" --version | grep -qE '^[0-9]+\.[0-9]+\.[0-9]+' || { echo "FAIL: --version"; exit 1; }
 # No subcommand is a usage error (exit 2), not a crash.
 set +e; "$pathref" >/dev/null 2>&1; rc=$?; set -e

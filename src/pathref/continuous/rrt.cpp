@@ -99,8 +99,8 @@ RrtResult rrt(const CollisionChecker& map, Vec2 start, Vec2 goal, const RrtParam
   };
   const auto sample = [&]() {
     for (std::int64_t tries = 0;; ++tries) {
-      const double u1 = stream.next_double();
-      const double u2 = stream.next_double();
+      const double u1 = stream.next_double("rrt sample x");
+      const double u2 = stream.next_double("rrt sample y");
       const Vec2 x{lo.x + u1 * wx, lo.y + u2 * wy};
       if (params.sample == SampleMode::rect || map.point_free(x)) return x;
       if (tries + 1 >= params.max_rejections)
@@ -115,13 +115,14 @@ RrtResult rrt(const CollisionChecker& map, Vec2 start, Vec2 goal, const RrtParam
   bool found = reaches_goal(0);
   while (!found && out.iterations < params.max_iterations) {
     ++out.iterations;
+    if (stream.tracing()) stream.set_context("iteration " + std::to_string(out.iterations));
     Vec2 target;
     std::size_t near = 0;
     switch (params.variant) {
       case RrtVariant::paper: {
         const Vec2 x_rand = sample();
         if (params.near == NearTo::sample) near = t.kd.nearest(x_rand);
-        const double p = stream.next_double();
+        const double p = stream.next_double("rrt goal-bias test (cin2021.alg1)");
         target = goal_chosen(p) ? goal : x_rand;
         if (params.near == NearTo::target) near = t.kd.nearest(target);
         break;
@@ -132,7 +133,7 @@ RrtResult rrt(const CollisionChecker& map, Vec2 start, Vec2 goal, const RrtParam
         break;
       }
       case RrtVariant::ompl: {
-        const double p = stream.next_double();
+        const double p = stream.next_double("rrt goal-bias test (cin2021.alg1)");
         target = goal_chosen(p) ? goal : sample();
         near = t.kd.nearest(target);
         break;

@@ -187,7 +187,7 @@ CurveResult smooth_path(const CollisionChecker& map, const std::vector<Vec2>& ra
 }
 
 ContinuousRun run_continuous(std::string_view algo, const CollisionChecker& map, Vec2 start, Vec2 goal,
-                             const Json& merged, std::uint32_t seed) {
+                             const Json& merged, std::uint32_t seed, rng::Trace* trace) {
   if (!is_continuous_planner(algo)) throw UsageError("not a continuous planner: '" + std::string(algo) + "'");
   const RrtParams params = rrt_params(merged);
   const bool do_shortcut = algo == "s-rrt" && merged.value("shortcut", true);
@@ -197,6 +197,7 @@ ContinuousRun run_continuous(std::string_view algo, const CollisionChecker& map,
   run.params_used = merged;
   const auto t0 = std::chrono::steady_clock::now();
   rng::Stream stream(seed);
+  stream.set_trace(trace);
   run.tree = rrt(map, start, goal, params, stream);
   if (run.tree.found) {
     for (const std::size_t k : run.tree.path) run.raw.push_back(run.tree.nodes[k]);

@@ -16,6 +16,10 @@
 #include "pathref/equations/bspline.hpp"
 #include "pathref/geometry/clearance.hpp"
 
+namespace pathref::rng {
+class Trace;  // rng/trace.hpp
+}  // namespace pathref::rng
+
 namespace pathref::continuous {
 
 using Json = nlohmann::json;
@@ -102,9 +106,11 @@ struct ContinuousRun {
 };
 
 /// Runs `algo` ("rrt" | "s-rrt") with parameters `merged` (continuous_defaults overlaid with the
-/// user's) from `start` to `goal`, seed `seed`. Spec: cin2021.alg1, cin2021.alg2.
+/// user's) from `start` to `goal`, seed `seed`; `trace` (optional, not owned) records every draw
+/// (spec/rng.md#draw-traces). Spec: cin2021.alg1, cin2021.alg2.
 /// Pre: as rrt(); is_continuous_planner(algo) (UsageError).
 [[nodiscard]] ContinuousRun run_continuous(std::string_view algo, const CollisionChecker& map, Vec2 start,
-                                           Vec2 goal, const Json& merged, std::uint32_t seed);
+                                           Vec2 goal, const Json& merged, std::uint32_t seed,
+                                           rng::Trace* trace = nullptr);
 
 }  // namespace pathref::continuous

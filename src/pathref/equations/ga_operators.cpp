@@ -347,7 +347,7 @@ Walk research_walk(const grid::Grid& g, grid::Cell from, grid::Cell to,
     }
     std::size_t pick = 0;
     if (mode == Research::random) {
-      pick = rng::uniform_index(stream.next_double(), cand.size());
+      pick = rng::uniform_index(stream.next_double("cin2021.op.mutation random re-search step (rng.index)"), cand.size());
     } else {
       std::int64_t best = -1;
       for (std::size_t i = 0; i < cand.size(); ++i) {

@@ -25,6 +25,7 @@ Planner colony_planner(std::string name, std::string description, ant_colony::Co
     const Json params = merge_params(defaults, req.params);
     const ant_colony::Config cfg = ant_colony::from_params(preset(), params);
     rng::Stream stream(req.seed);
+    stream.set_trace(req.trace);
     ant_colony::Run r = ant_colony::run(req, cfg, stream);
     r.result.extra["seed"] = req.seed;
     return std::move(r.result);

@@ -1,5 +1,7 @@
 #include "pathref/planners/ant_colony.hpp"
 
+#include <fmt/core.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -597,13 +599,15 @@ Run run(const planners::Request& req, const Config& cfg, rng::Stream& stream,
           aco::transition_weights_into(w_tau, w_eta, cfg.alpha, std::nullopt, weights);
         }
         std::size_t k = 0;
+        if (stream.tracing())
+          stream.set_context(fmt::format("iteration {} ant {} step {}", t, a, path.size() - 1));
         if (cfg.selection == Selection::proportional) {
-          const double u = stream.next_double();
+          const double u = stream.next_double("aco.transition roulette (rng.roulette)");
           k = rng::roulette(weights, u);
         } else {
-          const double q = stream.next_double();
+          const double q = stream.next_double("aco.transition q0 test (pseudo-random proportional)");
           double u = 0.0;
-          if (cfg.draw_u == DrawU::always || q > q0) u = stream.next_double();
+          if (cfg.draw_u == DrawU::always || q > q0) u = stream.next_double("aco.transition roulette (rng.roulette)");
           k = aco::pseudo_random_choice(weights, q, q0, u).index;
         }
         const std::int64_t next = cand_index[k];

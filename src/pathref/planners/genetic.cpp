@@ -1,5 +1,7 @@
 #include "pathref/planners/genetic.hpp"
 
+#include <fmt/core.h>
+
 #include <algorithm>
 #include <cmath>
 #include <iterator>
@@ -536,8 +538,9 @@ InitOutcome initial_paths(const grid::Grid& g, grid::Cell start, grid::Cell goal
     bool done = false;
     const std::int64_t attempts = c.init_retry == InitRetry::none ? 1 : c.init_attempts;
     for (std::int64_t attempt = 0; attempt < attempts && !done; ++attempt) {
+      if (stream.tracing()) stream.set_context(fmt::format("initial chain {} attempt {}", a, attempt));
       for (std::size_t l = 1; l + 1 < L; ++l)
-        pick[l] = rng::uniform_index(stream.next_double(), levels[l].size());
+        pick[l] = rng::uniform_index(stream.next_double("ga initial chain: a free cell of the level (rng.index)"), levels[l].size());
       ++out.chains;
       bool feasible = true;
       if (verdicts.enabled()) {
@@ -637,24 +640,26 @@ Evolution evolve(const grid::Grid& g, grid::CornerPolicy policy, const Config& c
     // Step 2: roulette selection (Eq. 11), S draws.
     for (std::size_t s = 0; s < S; ++s) fit[s] = pop[s].fitness;
     pool.clear();
+    if (stream.tracing()) stream.set_context(fmt::format("generation {} selection", i));
     if (c.selection == Selection::independent) {
-      for (std::size_t s = 0; s < S; ++s) pool.push_back(pop[rng::roulette(fit, stream.next_double())]);
+      for (std::size_t s = 0; s < S; ++s) pool.push_back(pop[rng::roulette(fit, stream.next_double("ga selection roulette (rng.roulette)"))]);
     } else {  // sorted: S draws, ascending, then the roulette of each (the classic script)
       std::vector<double> us(S);
-      for (double& u : us) u = stream.next_double();
+      for (double& u : us) u = stream.next_double("ga selection roulette, sorted draws (rng.roulette)");
       std::sort(us.begin(), us.end());
       for (const double u : us) pool.push_back(pop[rng::roulette(fit, u)]);
     }
     // Step 3: crossover of the pairs (2p, 2p + 1).
     for (std::size_t p = 0; p + 1 < S; p += 2) {
-      if (!rng::bernoulli(stream.next_double(), pc)) continue;
+      if (stream.tracing()) stream.set_context(fmt::format("generation {} pair {}", i, p / 2));
+      if (!rng::bernoulli(stream.next_double("ga crossover test u < pc (rng.bernoulli)"), pc)) continue;
       const bool script = c.crossover_points == CrossoverPoints::script;
       const std::vector<ga::CrossPoint> pts =
           script ? ga::crossover_points_any(pool[p].path, pool[p + 1].path)
                  : ga::crossover_points(pool[p].path, pool[p + 1].path);
       ga::Children ch;
       if (!pts.empty()) {
-        const double u = stream.next_double();
+        const double u = stream.next_double("ga crossover point");
         const ga::CrossPoint pt = pts[script ? ga::round_choice(u, pts.size())
                                              : rng::uniform_index(u, pts.size())];
         ch = ga::crossover_at(pool[p].path, pool[p + 1].path, pt);
@@ -663,8 +668,8 @@ Evolution evolve(const grid::Grid& g, grid::CornerPolicy policy, const Config& c
         const std::size_t na = pool[p].path.size();
         const std::size_t nb = pool[p + 1].path.size();
         if (c.crossover != Crossover::cin || na < 3 || nb < 3) continue;
-        const std::size_t k = 1 + rng::uniform_index(stream.next_double(), na - 2);
-        const std::size_t j = 1 + rng::uniform_index(stream.next_double(), nb - 2);
+        const std::size_t k = 1 + rng::uniform_index(stream.next_double("ga crossover cut gene, parent a (cin2021.op.crossover)"), na - 2);
+        const std::size_t j = 1 + rng::uniform_index(stream.next_double("ga crossover cut gene, parent b (cin2021.op.crossover)"), nb - 2);
         ga::CutChildren cut = ga::crossover_cut(g, pool[p].path, pool[p + 1].path, k, j, policy,
                                                 c.mid_rounding, c.init_reject, c.illegal_step);
         if (!cut.feasible) continue;
@@ -702,15 +707,16 @@ Evolution evolve(const grid::Grid& g, grid::CornerPolicy policy, const Config& c
     }
     // Step 4: mutation of each individual.
     for (std::size_t a = 0; a < S; ++a) {
-      if (!rng::bernoulli(stream.next_double(), pm)) continue;
+      if (stream.tracing()) stream.set_context(fmt::format("generation {} individual {}", i, a));
+      if (!rng::bernoulli(stream.next_double("ga mutation test u < pm (rng.bernoulli)"), pm)) continue;
       const std::size_t n = pool[a].path.size();
       if (n < 3) continue;
       if (c.mutation == Mutation::segment) {
         // The classic script: two positions round(u (n - 3)) + 1, sorted; the genes between
         // are replaced by the repair of their outer neighbours; redrawn while it rejects.
         for (std::int64_t t = 0; t < c.mutation_attempts; ++t) {
-          const std::size_t k1 = 1 + ga::round_choice(stream.next_double(), n - 2);
-          const std::size_t k2 = 1 + ga::round_choice(stream.next_double(), n - 2);
+          const std::size_t k1 = 1 + ga::round_choice(stream.next_double("ga segment mutation, first position"), n - 2);
+          const std::size_t k2 = 1 + ga::round_choice(stream.next_double("ga segment mutation, second position"), n - 2);
           auto mutated = ga::segment_mutation(g, pool[a].path, std::min(k1, k2), std::max(k1, k2),
                                               policy, c.mid_rounding, c.init_reject, c.illegal_step);
           if (!mutated) continue;
@@ -720,7 +726,7 @@ Evolution evolve(const grid::Grid& g, grid::CornerPolicy policy, const Config& c
         }
         continue;
       }
-      const std::size_t k = 1 + rng::uniform_index(stream.next_double(), n - 2);
+      const std::size_t k = 1 + rng::uniform_index(stream.next_double("ga mutation gene (rng.index)"), n - 2);
       if (c.mutation == Mutation::multidirectional) {
         // cin2021.op.mutation: mutant A (towards S) then B (from G); the fitter replaces.
         ga::Mutants mu = ga::multidirectional_mutants(g, pool[a].path, k, policy, c.research, stream);
@@ -739,7 +745,7 @@ Evolution evolve(const grid::Grid& g, grid::CornerPolicy policy, const Config& c
       const std::vector<grid::Cell> cand = ga::mutation_candidates(g, pool[a].path, k, policy);
       if (cand.empty()) continue;
       std::vector<grid::Cell> path = std::move(pool[a].path);  // pool[a] is replaced below
-      path[k] = cand[rng::uniform_index(stream.next_double(), cand.size())];
+      path[k] = cand[rng::uniform_index(stream.next_double("ga mutation: the new cell among the candidates (rng.index)"), cand.size())];
       if (c.loops == Loops::cut) path = ga::remove_loops(path);
       pool[a] = make_individual(g, std::move(path), c, Origin::mutation, i);
     }
@@ -816,6 +822,7 @@ Planner make(const char* name, const char* description, const genetic::Config& b
     const Json params = merge_params(defaults, req.params);
     const genetic::Config c = genetic::from_params(base, params);
     rng::Stream stream(req.seed);
+    stream.set_trace(req.trace);
     return genetic::run(req, c, stream);
   };
   return p;

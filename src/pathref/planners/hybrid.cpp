@@ -367,6 +367,7 @@ Planner make_hybrid_ga_aco_planner() {
     const Json params = merge_params(defaults, req.params);
     const hybrid::TraditionalConfig c = hybrid::from_params(base, params);
     rng::Stream stream(req.seed);
+    stream.set_trace(req.trace);
     return hybrid::run_traditional(req, c, stream);
   };
   return p;
@@ -384,6 +385,7 @@ Planner make_hga_aco_cin_planner() {
     const Json params = merge_params(defaults, req.params);
     const hybrid::CinConfig c = hybrid::from_params(base, params);
     rng::Stream stream(req.seed);
+    stream.set_trace(req.trace);
     planners::Result r = hybrid::run_cin(req, c, stream);
     r.extra["seed"] = req.seed;
     return r;
@@ -403,6 +405,7 @@ Planner make_iha_planner() {
     const Json params = merge_params(defaults, req.params);
     const hybrid::ImprovedConfig c = hybrid::from_params(base, params);
     rng::Stream stream(req.seed);
+    stream.set_trace(req.trace);
     return hybrid::run_improved(req, c, stream);
   };
   return p;

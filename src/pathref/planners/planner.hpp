@@ -18,6 +18,10 @@ namespace pathref::search {
 class Workspace;  // search.hpp
 }  // namespace pathref::search
 
+namespace pathref::rng {
+class Trace;  // rng/trace.hpp
+}  // namespace pathref::rng
+
 namespace pathref::planners {
 
 using Json = nlohmann::json;
@@ -36,6 +40,10 @@ struct Request {
   /// results are the same with or without it (spec/search.md "Reusing the search state").
   /// Other planners ignore it.
   search::Workspace* workspace = nullptr;
+  /// Optional draw trace (not owned): the planner's stream records every draw in it with its
+  /// purpose (spec/rng.md#draw-traces; `pathref plan --trace`). Results are the same with or
+  /// without it. Deterministic planners draw nothing.
+  rng::Trace* trace = nullptr;
 };
 
 struct Result {

@@ -8,8 +8,17 @@
 #include <cstdint>
 #include <random>
 #include <span>
+#include <string>
+#include <string_view>
+#include <utility>
 
 namespace pathref::rng {
+
+class Trace;  // trace.hpp
+namespace detail {
+/// trace.record(index, value, purpose, context), out of line (trace.cpp).
+void record_draw(Trace& trace, std::uint64_t index, double value, std::string_view purpose, std::string_view context);
+}  // namespace detail
 
 /// The MT19937 engine of the standard library with 32-bit words: exactly the parameters of
 /// [rand.predef]'s `std::mt19937` (w = 32, n = 624, m = 397, r = 31, a = 0x9908B0DF, u = 11,
@@ -45,14 +54,24 @@ class Stream {
   /// Spec: rng.stream
   [[nodiscard]] std::uint32_t next_u32() { return static_cast<std::uint32_t>(engine_()); }
 
-  /// The next double in [0, 1) (genrand_res53): consumes two 32-bit outputs.
+  /// The next double in [0, 1) (genrand_res53): consumes two 32-bit outputs. `purpose` names
+  /// the rule that consumes it (recorded only when a trace is attached: spec/rng.md#draw-traces).
   /// Spec: rng.res53. Post: a multiple of 2^-53 in [0, 1). Golden: golden/rng/rng.res53.json
-  [[nodiscard]] double next_double() {
+  [[nodiscard]] double next_double(std::string_view purpose = {}) {
     const std::uint32_t a = next_u32();
     const std::uint32_t b = next_u32();
+    const double u = res53(a, b);
+    if (trace_ != nullptr) [[unlikely]]
+      detail::record_draw(*trace_, doubles_drawn_, u, purpose, context_);
     ++doubles_drawn_;
-    return res53(a, b);
+    return u;
   }
+  /// Attaches a trace (not owned; nullptr detaches): every later next_double is recorded in it.
+  void set_trace(Trace* trace) noexcept { trace_ = trace; }
+  [[nodiscard]] bool tracing() const noexcept { return trace_ != nullptr; }
+  /// Where the caller is ("iteration 2 ant 5 step 7"), recorded with the following draws. Callers
+  /// build the text only when tracing() is true, so an untraced run pays nothing for it.
+  void set_context(std::string context) { context_ = std::move(context); }
 
   [[nodiscard]] std::uint32_t seed() const noexcept { return seed_; }
   [[nodiscard]] std::uint64_t doubles_drawn() const noexcept { return doubles_drawn_; }
@@ -61,6 +80,8 @@ class Stream {
   Mt19937 engine_;
   std::uint32_t seed_;
   std::uint64_t doubles_drawn_ = 0;
+  Trace* trace_ = nullptr;
+  std::string context_;
 };
 
 }  // namespace pathref::rng

@@ -1,0 +1,87 @@
+#include "pathref/rng/trace.hpp"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "pathref/core/error.hpp"
+#include "pathref/io/json_text.hpp"
+
+namespace pathref::rng {
+
+void Trace::record(std::uint64_t index, double value, std::string_view purpose, std::string_view context) {
+  if (draws_.size() >= limit_) {
+    ++dropped_;
+    return;
+  }
+  draws_.push_back(Draw{index, value, std::string(purpose), std::string(context)});
+}
+
+namespace detail {
+void record_draw(Trace& trace, std::uint64_t index, double value, std::string_view purpose, std::string_view context) {
+  trace.record(index, value, purpose, context);
+}
+}  // namespace detail
+
+std::string trace_text(const Trace& trace, std::uint32_t seed, const nlohmann::json& header) {
+  nlohmann::json head{{"format", "pathref-trace"}, {"format_version", 1}, {"seed", seed}};
+  for (const auto& [k, v] : header.items()) head[k] = v;
+  head["draws"] = trace.draws().size();
+  head["dropped"] = trace.dropped();
+  std::string s = head.dump() + "\n";
+  for (const Draw& d : trace.draws())
+    s += fmt::format("{{\"i\":{},\"u\":{:.17g},\"purpose\":{},\"context\":{}}}\n", d.index, d.value,
+                     nlohmann::json(d.purpose).dump(), nlohmann::json(d.context).dump());
+  return s;
+}
+
+TraceFile parse_trace(std::string_view text, std::string_view file_view) {
+  const std::string file(file_view);
+  TraceFile out;
+  std::size_t line = 1;
+  bool first = true;
+  for (std::size_t at = 0; at < text.size(); ++line) {
+    std::size_t nl = text.find('\n', at);
+    if (nl == std::string_view::npos) nl = text.size();
+    const std::string_view l = text.substr(at, nl - at);
+    at = nl + 1;
+    if (l.find_first_not_of(" \t\r") == std::string_view::npos) continue;
+    const nlohmann::json j = io::parse_json_text(l, file, line);
+    if (!j.is_object()) throw ParseError(file, line, 1, "a JSON object per line");
+    if (first) {
+      first = false;
+      if (j.value("format", "") == "pathref-trace") {
+        out.header = j;
+        continue;
+      }
+    }
+    const auto num = [&](const char* key) -> const nlohmann::json& {
+      const auto it = j.find(key);
+      if (it == j.end() || !it->is_number())
+        throw ParseError(file, line, 1, std::string("a draw {\"i\": INDEX, \"u\": VALUE, ...} (no number \"") + key + "\")");
+      return *it;
+    };
+    const nlohmann::json& i = num("i");
+    const double u = num("u").get<double>();
+    if (!i.is_number_unsigned() || i.get<std::uint64_t>() != out.draws.size())
+      throw ParseError(file, line, 1, fmt::format("draw index {} (draws are numbered 0, 1, 2, ... in order), got {}",
+                                                  out.draws.size(), i.dump()));
+    if (!(u >= 0.0 && u < 1.0)) throw ParseError(file, line, 1, fmt::format("u in [0, 1), got {}", num("u").dump()));
+    Draw d{out.draws.size(), u, "", ""};
+    if (const auto p = j.find("purpose"); p != j.end() && p->is_string()) d.purpose = p->get<std::string>();
+    if (const auto c = j.find("context"); c != j.end() && c->is_string()) d.context = c->get<std::string>();
+    out.draws.push_back(std::move(d));
+  }
+  return out;
+}
+
+std::optional<std::size_t> first_divergence(const std::vector<Draw>& a, const std::vector<Draw>& b) {
+  const std::size_t n = std::min(a.size(), b.size());
+  for (std::size_t k = 0; k < n; ++k)
+    if (a[k].value != b[k].value) return k;  // exact: the stream promises bit-for-bit equality
+  if (a.size() != b.size()) return n;
+  return std::nullopt;
+}
+
+}  // namespace pathref::rng
