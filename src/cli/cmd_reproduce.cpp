@@ -491,7 +491,9 @@ void add_reproduce_command(CLI::App& app, Action& run) {
       } catch (const Json::exception& e) {
         throw UsageError(fmt::format("run-job: the job is not JSON ({})", e.what()));
       }
-      fmt::print("{}\n", reproduce::run_job(job).dump());
+      Json out = reproduce::run_job(job);
+      stamp_version(out);
+      fmt::print("{}\n", out.dump());
       return 0;
     };
   });

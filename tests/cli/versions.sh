@@ -7,7 +7,7 @@
 # marks exactly the rules that spec/index/*.json grades with their grade and "reconstructed".
 # Usage: bash tests/cli/versions.sh path/to/pathref   (from the repository root)
 set -euo pipefail
-pathref=$1
+pathref=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 fail() { echo "FAIL: $*"; exit 1; }
 
@@ -51,6 +51,11 @@ done
   --predictions "$tmp/p.json" >"$tmp/learn.json"
 stamped "$tmp/learn.json" "learn --json"; stamped "$tmp/m.json" "learn --save-model"; stamped "$tmp/p.json" "learn --predictions"
 "$pathref" classify --model "$tmp/m.json" 6.5 1.0 --json >"$tmp/cls.json"; stamped "$tmp/cls.json" "classify --json"
+
+# reproduce run-job (the jobs of --emit-jobs): one job's JSON output
+(cd "$tmp" && "$pathref" reproduce han --quick --emit-jobs jobs.txt --out-dir "$tmp/e" >/dev/null 2>&1) || fail "--emit-jobs"
+(cd "$tmp" && bash -c "$(head -n 1 jobs.txt)") || fail "the first run-job command"
+stamped "$(ls "$tmp"/jobs.txt.results/* | head -n 1)" "reproduce run-job"
 
 # Grades: eval --list (text and JSON) and a single eval agree with spec/index/*.json.
 "$pathref" eval --list >"$tmp/list.txt"
