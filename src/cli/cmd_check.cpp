@@ -13,10 +13,8 @@
 
 #include "commands.hpp"
 #include "pathref/core/error.hpp"
-#include "pathref/equations/metrics.hpp"
-#include "pathref/geometry/clearance.hpp"
+#include "pathref/io/path_check.hpp"
 #include "pathref/io/path_file.hpp"
-#include "pathref/planners/search.hpp"
 #include "pathref/reproduce/stats.hpp"
 #include "pathref/rules/registry.hpp"
 
@@ -37,8 +35,6 @@ struct CheckOptions {
   MapReadArgs read;
 };
 
-std::string cell_text(grid::Cell c) { return fmt::format("({}, {})", c.x, c.y); }
-
 /// The files of --path: the file itself, or every regular file of a folder (sorted, not recursive).
 std::vector<fs::path> path_inputs(const std::string& path) {
   if (!fs::is_directory(path)) return {fs::path(path)};
@@ -55,35 +51,6 @@ bool is_json_lines(const fs::path& p) {
   return ext == ".jsonl" || ext == ".ndjson";
 }
 
-/// Why step k failed, in words (spec/check.md#verdict).
-std::string explain(const metrics::PathCheck& v, const std::vector<grid::Cell>& path, const grid::Grid& g,
-                    grid::Cell start, grid::Cell goal, grid::CornerPolicy policy) {
-  const auto k = static_cast<std::size_t>(v.index < 0 ? 0 : v.index);
-  if (v.reason == "empty") return "the path has no node";
-  if (v.reason == "start_mismatch")
-    return fmt::format("the first node {} is not the start {}", cell_text(path[0]), cell_text(start));
-  if (v.reason == "goal_mismatch")
-    return fmt::format("the last node {} is not the goal {}", cell_text(path[k]), cell_text(goal));
-  if (v.reason == "out_of_bounds")
-    return fmt::format("node {} {} is outside the {}x{} map", k, cell_text(path[k]), g.width(), g.height());
-  if (v.reason == "blocked") return fmt::format("node {} {} is a blocked cell", k, cell_text(path[k]));
-  const grid::Cell a = path[k - 1], b = path[k];
-  if (v.reason == "repeated") return fmt::format("node {} repeats node {} {}", k, k - 1, cell_text(a));
-  if (v.reason == "not_adjacent")
-    return fmt::format("step {} -> {} (node {} to {}) is not a step to one of the 8 neighbours", cell_text(a),
-                       cell_text(b), k - 1, k);
-  if (v.reason == "corner_cut") {
-    std::string blocked;
-    for (const grid::Cell c : {grid::Cell{b.x, a.y}, grid::Cell{a.x, b.y}})
-      if (!g.free(c)) blocked += (blocked.empty() ? "" : " and ") + cell_text(c);
-    return fmt::format("diagonal step {} -> {} (node {} to {}) is refused by policy {}{}", cell_text(a), cell_text(b),
-                       k - 1, k, grid::to_string(policy),
-                       policy == grid::CornerPolicy::never ? std::string(" (no diagonal step)")
-                                                           : " (it passes blocked " + blocked + ")");
-  }
-  return v.reason;
-}
-
 Json number_or_null(std::optional<double> v) { return v && std::isfinite(*v) ? rules::number(*v) : Json(nullptr); }
 
 struct Endpoints {
@@ -97,60 +64,31 @@ struct Checked {
   std::optional<double> length, ratio;
 };
 
-/// Checks one path (spec/check.md#verdict, #metrics).
+/// Checks one path (spec/check.md#verdict, #metrics) with the library's checker (io::check_path,
+/// shared with the Python module); the optimum is computed once per (start, goal).
 Checked check_one(const io::PathRecord& rec, const std::vector<grid::Cell>& path, const grid::Grid& g,
                   const Endpoints& e, grid::CornerPolicy policy,
                   std::map<std::pair<std::int64_t, std::int64_t>, std::optional<double>>& optimum_cache) {
-  const metrics::PathCheck v = metrics::validate_path(g, path, e.start, e.goal, policy);
-  Checked c;
-  c.valid = v.valid;
-  std::optional<double> length, clearance;
-  std::optional<std::int64_t> turns;
-  try {  // the metrics' path domain (spec/metrics.md): else null
-    length = metrics::path_length(path);
-    turns = metrics::turn_count(path);
-  } catch (const DomainError&) {
-  }
-  if (v.valid) {
-    std::vector<geometry::Vec2> centres;
-    centres.reserve(path.size());
-    for (const grid::Cell p : path)
-      centres.push_back({static_cast<double>(p.x) + 0.5, static_cast<double>(p.y) + 0.5});
-    clearance = geometry::clearance(g, centres).distance;
-  }
   std::optional<double> optimum;
   if (g.free(e.start) && g.free(e.goal)) {
     const auto key = std::make_pair(g.index(e.start), g.index(e.goal));
     auto it = optimum_cache.find(key);
-    if (it == optimum_cache.end()) {
-      const auto o = search::dijkstra(g, e.start, e.goal, policy);
-      it = optimum_cache.emplace(key, o.found ? std::optional<double>(o.length) : std::nullopt).first;
-    }
+    if (it == optimum_cache.end()) it = optimum_cache.emplace(key, io::optimum_length(g, e.start, e.goal, policy)).first;
     optimum = it->second;
   }
-  if (v.valid && length && optimum && *optimum > 0) c.ratio = *length / *optimum;
-  c.length = length;
-  Json step = nullptr;
-  if (!v.valid && v.index >= 1 && (v.reason == "repeated" || v.reason == "not_adjacent" || v.reason == "corner_cut"))
-    step = Json{{"from", {path[static_cast<std::size_t>(v.index) - 1].x, path[static_cast<std::size_t>(v.index) - 1].y}},
-                {"to", {path[static_cast<std::size_t>(v.index)].x, path[static_cast<std::size_t>(v.index)].y}}};
+  const io::PathReport r = io::check_path(g, path, e.start, e.goal, policy, optimum);
+  Checked c;
+  c.valid = r.check.valid;
+  c.length = r.length;
+  c.ratio = r.ratio;
   c.j = Json{{"name", rec.name},
              {"format", std::string(io::to_string(rec.format))},
              {"nodes", path.size()},
              {"start", {e.start.x, e.start.y}},
              {"start_from", e.start_from},
              {"goal", {e.goal.x, e.goal.y}},
-             {"goal_from", e.goal_from},
-             {"valid", v.valid},
-             {"reason", v.reason},
-             {"index", v.index},
-             {"step", step},
-             {"message", v.valid ? std::string("ok") : explain(v, path, g, e.start, e.goal, policy)},
-             {"length", number_or_null(length)},
-             {"turns", turns ? Json(*turns) : Json(nullptr)},
-             {"optimum", number_or_null(optimum)},
-             {"ratio", number_or_null(c.ratio)},
-             {"clearance", number_or_null(clearance)}};
+             {"goal_from", e.goal_from}};
+  c.j.update(io::path_report_json(r, path));
   return c;
 }
 

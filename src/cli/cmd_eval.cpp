@@ -30,59 +30,16 @@ rules::Json parse_assignments(const std::vector<std::string>& assignments) {
   return input;
 }
 
-/// UsageError when `input` has a key that is not one of the rule's inputs (spec/cli.md#eval):
-/// a misspelt key must never be ignored in favour of the default.
-void reject_unknown_inputs(const rules::Rule& rule, const rules::Json& input) {
-  // A placeholder input (`<parameter>`: any planner parameter, checked by the planner itself
-  // against its defaults, planners::merge_params) admits every key.
-  for (const auto& f : rule.inputs)
-    if (!f.name.empty() && f.name.front() == '<') return;
-  for (const auto& [key, value] : input.items()) {
-    bool known = false;
-    for (const auto& f : rule.inputs) known = known || f.name == key;
-    if (known) continue;
-    std::string names;
-    for (const auto& f : rule.inputs) names += (names.empty() ? "" : ", ") + f.name;
-    throw UsageError("rule " + rule.id + " has no input '" + key + "' (its inputs: " +
-                     (names.empty() ? std::string("none") : names) + ")");
-  }
-}
-
-/// A reconstructed rule (cin2021, sensors2023) carries "grade" and "reconstructed": true
-/// (spec/index/*.json; docs/versioning.md#confidence-grades); a paper's own equation carries neither.
-void add_grade(rules::Json& doc, const std::string& id) {
-  if (const auto g = reconstruction_grade(id)) {
-    doc["grade"] = std::string(1, *g);
-    doc["reconstructed"] = true;
-  }
-}
-
 /// "  [grade B, reconstructed]" for a reconstructed rule, "" otherwise (the text of eval --list).
 std::string grade_tag(const std::string& id) {
   const auto g = reconstruction_grade(id);
   return g ? fmt::format("  [grade {}, reconstructed]", *g) : std::string();
 }
 
-rules::Json fields_json(const std::vector<rules::Field>& fields) {
-  rules::Json a = rules::Json::array();
-  for (const auto& f : fields) a.push_back({{"name", f.name}, {"type", f.type}, {"doc", f.doc}});
-  return a;
-}
-
 }  // namespace
 
 rules::Json rule_list_json() {
-  rules::Json list = rules::Json::array();
-  for (const auto& r : rules::registry().all()) {
-    rules::Json entry{{"id", r.id},
-                      {"summary", r.summary},
-                      {"function", r.function},
-                      {"inputs", fields_json(r.inputs)},
-                      {"outputs", fields_json(r.outputs)}};
-    add_grade(entry, r.id);
-    list.push_back(std::move(entry));
-  }
-  rules::Json doc{{"format", "pathref-rules"}, {"format_version", 1}, {"rules", list}};
+  rules::Json doc = rules::rule_list_json();
   stamp_version(doc);
   return doc;
 }
@@ -118,10 +75,10 @@ void add_eval_command(CLI::App& app, Action& run) {
       if (rule == nullptr)
         throw UsageError("unknown rule '" + rule_id + "' (see pathref eval --list)");
       const rules::Json input = parse_assignments(assignments);
-      reject_unknown_inputs(*rule, input);
+      rules::check_inputs(*rule, input);
       const rules::Json out = rule->eval(input);
       rules::Json doc{{"rule", rule->id}, {"input", input}, {"output", out}};
-      add_grade(doc, rule->id);
+      rules::add_grade(doc, rule->id);
       stamp_version(doc);
       fmt::print("{}\n", doc.dump(2));
       return 0;

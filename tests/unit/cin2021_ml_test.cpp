@@ -59,7 +59,7 @@ TEST_CASE("cin2021.data: bad rows are ParseErrors naming line and column", "[cin
 TEST_CASE("cin2021.data: the shared 2-, 4- and 24-sensor files", "[cin2021-ml][shared]") {
   const std::string dir = pathref::testing::shared_dir() + "/data/uci-wall-following/";
   if (!std::filesystem::exists(dir + "sensor_readings_4.data")) {
-    WARN("skipped: " << dir << " is absent");
+    pathref::testing::skip_test(dir + " is absent (shared data)");
     return;
   }
   const Dataset d2 = read_wall_following(dir + "sensor_readings_2.data");

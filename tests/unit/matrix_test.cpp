@@ -138,7 +138,7 @@ TEST_CASE("matrix: shared MATLAB maps B and C give the published strict-policy o
           "[matrix][shared]") {
   const std::string dir = pathref::testing::shared_dir() + "/data/matlab-maps/";
   if (!std::filesystem::exists(dir)) {
-    WARN("skipped: " << dir << " is absent");
+    pathref::testing::skip_test(dir + " is absent (shared data)");
     return;
   }
   struct Expect {

@@ -70,8 +70,8 @@ TEST_CASE("shi2022.plan.ga: the initial population builds on the paper's maps B 
   const auto b = paper_map("mapB_20x20_ga.txt");
   const auto c = paper_map("mapC_20x20_winsleo_traditional.txt");
   if (!b || !c) {
-    WARN("skipped: the MATLAB maps are not under " << pathref::testing::shared_dir()
-                                                   << "/data/matlab-maps (shared data absent)");
+    pathref::testing::skip_test("the MATLAB maps are not under " + pathref::testing::shared_dir() +
+                                "/data/matlab-maps (shared data absent)");
     return;
   }
   // Map B: every seed of the protocol (about 25 chains per individual). Map C needs about 5 300
@@ -274,8 +274,8 @@ TEST_CASE("shi2022.plan.iga: loops = cut by default; under keep the growth stops
   // default cut keeps every child a simple path; keep stops at 64 x W x H nodes.
   const auto c = paper_map("mapC_20x20_winsleo_traditional.txt");
   if (!c) {
-    WARN("skipped: the MATLAB maps are not under " << pathref::testing::shared_dir()
-                                                   << "/data/matlab-maps (shared data absent)");
+    pathref::testing::skip_test("the MATLAB maps are not under " + pathref::testing::shared_dir() +
+                                "/data/matlab-maps (shared data absent)");
     return;
   }
   CHECK(planners::find_planner("iga-shi")->defaults.at("loops") == "cut");

@@ -49,6 +49,13 @@ class UsageError : public Error {
   explicit UsageError(const std::string& message) : Error("UsageError", message) {}
 };
 
+/// A run stopped at an iteration boundary because its caller asked (planners::Request::interrupted;
+/// the Python module's Ctrl-C). Not a failure of the input.
+class Interrupted : public Error {
+ public:
+  explicit Interrupted(const std::string& message) : Error("Interrupted", message) {}
+};
+
 /// Throws DomainError(message) when `condition` is false. Preconditions are always checked:
 /// a reference implementation must never compute on inputs outside a rule's domain.
 inline void require(bool condition, const char* message) {

@@ -514,6 +514,7 @@ Run run(const planners::Request& req, const Config& cfg, rng::Stream& stream,
   };
 
   for (std::int64_t t = 1; t <= N; ++t) {
+    planners::stop_if_interrupted(req.interrupted);
     double q0 = 0.0;
     if (cfg.selection == Selection::pseudo_random) {
       const std::int64_t Nc = cfg.q0_origin == 1 ? t : t - 1;

@@ -617,7 +617,7 @@ InitOutcome initial_population(const grid::Grid& g, grid::Cell start, grid::Cell
 }
 
 Evolution evolve(const grid::Grid& g, grid::CornerPolicy policy, const Config& c,
-                 rng::Stream& stream, std::vector<Individual> pop) {
+                 rng::Stream& stream, std::vector<Individual> pop, const planners::Interrupt& interrupted) {
   require(!pop.empty(), "GA: empty population");
   Evolution ev;
   ev.best = pop.front();
@@ -628,6 +628,7 @@ Evolution evolve(const grid::Grid& g, grid::CornerPolicy policy, const Config& c
   std::vector<Individual> pool;
   pool.reserve(S);
   for (std::int64_t i = 1; i <= c.generations; ++i) {
+    planners::stop_if_interrupted(interrupted);
     // Probabilities of this generation (Table 1 or Eq. 19-20).
     double pc = c.pc;
     double pm = c.pm;
@@ -791,7 +792,7 @@ planners::Result run(const planners::Request& req, const Config& c, rng::Stream&
   std::vector<Individual> pop;
   pop.reserve(init.paths.size());
   for (const auto& p : init.paths) pop.push_back(make_individual(g, p, c, Origin::init, 0));
-  Evolution ev = evolve(g, req.policy, c, stream, std::move(pop));
+  Evolution ev = evolve(g, req.policy, c, stream, std::move(pop), req.interrupted);
   r.found = true;
   r.path = ev.best.path;
   r.length = ev.best.length;

@@ -280,8 +280,10 @@ struct Evolution {
 /// 5-9) from the given population, drawing from `stream`.
 /// Spec: shi2022.plan.ga, shi2022.plan.iga, shi2022.plan.iha.
 /// Pre: population non-empty, every path valid from start to goal (not checked), c validated.
+/// `interrupted` is asked before every generation (planners::Request::interrupted).
 [[nodiscard]] Evolution evolve(const grid::Grid& g, grid::CornerPolicy policy, const Config& c,
-                               rng::Stream& stream, std::vector<Individual> population);
+                               rng::Stream& stream, std::vector<Individual> population,
+                               const planners::Interrupt& interrupted = {});
 
 /// A whole single-GA / improved-GA / ga-cin run (spec shi2022.plan.ga / shi2022.plan.iga /
 /// cin2021.plan.ga): initial population, then evolve. Result.extra: best_generation,

@@ -239,7 +239,7 @@ planners::Result run_cin(const planners::Request& req, const CinConfig& c, rng::
     pop.push_back(genetic::make_individual(g, p, c.ga, genetic::Origin::init, 0));
   const auto built = static_cast<std::int64_t>(pop.size());
   Json population = genetic::population_extra(built, built, 0, init);
-  genetic::Evolution ev = genetic::evolve(g, req.policy, c.ga, stream, std::move(pop));
+  genetic::Evolution ev = genetic::evolve(g, req.policy, c.ga, stream, std::move(pop), req.interrupted);
   // Conversion (Eq. 28): the top elite_share of the last generation by fitness.
   std::vector<double> fit(ev.final_population.size());
   for (std::size_t s = 0; s < fit.size(); ++s) fit[s] = ev.final_population[s].fitness;
@@ -305,7 +305,7 @@ planners::Result run_traditional(const planners::Request& req, const Traditional
     pop.push_back(pop[k % sorted.size()]);
   const auto size = static_cast<std::int64_t>(pop.size());
   Json population = genetic::population_extra(size, from_init, size - from_init, init);
-  const genetic::Evolution ev = genetic::evolve(g, req.policy, c.ga, stream, std::move(pop));
+  const genetic::Evolution ev = genetic::evolve(g, req.policy, c.ga, stream, std::move(pop), req.interrupted);
   return finish(colony, ev, c.ga, std::move(population), std::move(params), stream);
 }
 
@@ -347,7 +347,7 @@ planners::Result run_improved(const planners::Request& req, const ImprovedConfig
   const auto from_aco = static_cast<std::int64_t>(K);
   Json population = genetic::population_extra(size, size - from_aco, from_aco, init);
   // Steps 6-9: the elitist generation loop.
-  const genetic::Evolution ev = genetic::evolve(g, req.policy, c.ga, stream, std::move(pop));
+  const genetic::Evolution ev = genetic::evolve(g, req.policy, c.ga, stream, std::move(pop), req.interrupted);
   return finish(colony, ev, c.ga, std::move(population), std::move(params), stream);
 }
 

@@ -7,6 +7,10 @@
 
 namespace pathref::planners {
 
+void stop_if_interrupted(const Interrupt& interrupted) {
+  if (interrupted && interrupted()) throw Interrupted("the run was interrupted at an iteration boundary");
+}
+
 const std::vector<Planner>& planners() {
   static const std::vector<Planner> all = [] {
     std::vector<Planner> v = all_planners();

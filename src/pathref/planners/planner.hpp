@@ -26,6 +26,12 @@ namespace pathref::planners {
 
 using Json = nlohmann::json;
 
+/// Asked at iteration boundaries: true = stop now (Request::interrupted).
+using Interrupt = std::function<bool()>;
+
+/// Throws pathref::Interrupted when `interrupted` is set and returns true (planner.cpp).
+void stop_if_interrupted(const Interrupt& interrupted);
+
 struct Request {
   const grid::Grid* grid = nullptr;
   grid::Cell start;
@@ -44,6 +50,10 @@ struct Request {
   /// purpose (spec/rng.md#draw-traces; `pathref plan --trace`). Results are the same with or
   /// without it. Deterministic planners draw nothing.
   rng::Trace* trace = nullptr;
+  /// Optional: asked at every iteration / generation boundary of the iterative planners; when it
+  /// returns true the run stops by throwing pathref::Interrupted (the Python module's Ctrl-C).
+  /// Empty: never asked. Asking draws nothing and changes no result.
+  Interrupt interrupted;
 };
 
 struct Result {

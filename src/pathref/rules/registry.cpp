@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "pathref/core/error.hpp"
+#include "pathref/core/version.hpp"
 #include "pathref/rules/modules.hpp"
 
 namespace pathref::rules {
@@ -81,6 +82,49 @@ Json number(double v) {
   if (std::isnan(v)) return "nan";
   if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
   return v;
+}
+
+void check_inputs(const Rule& rule, const Json& input) {
+  for (const auto& f : rule.inputs)
+    if (!f.name.empty() && f.name.front() == '<') return;
+  for (const auto& [key, value] : input.items()) {
+    bool known = false;
+    for (const auto& f : rule.inputs) known = known || f.name == key;
+    if (known) continue;
+    std::string names;
+    for (const auto& f : rule.inputs) names += (names.empty() ? "" : ", ") + f.name;
+    throw UsageError("rule " + rule.id + " has no input '" + key + "' (its inputs: " +
+                     (names.empty() ? std::string("none") : names) + ")");
+  }
+}
+
+void add_grade(Json& doc, const std::string& id) {
+  if (const auto g = reconstruction_grade(id)) {
+    doc["grade"] = std::string(1, *g);
+    doc["reconstructed"] = true;
+  }
+}
+
+namespace {
+Json fields_json(const std::vector<Field>& fields) {
+  Json a = Json::array();
+  for (const auto& f : fields) a.push_back({{"name", f.name}, {"type", f.type}, {"doc", f.doc}});
+  return a;
+}
+}  // namespace
+
+Json rule_list_json() {
+  Json list = Json::array();
+  for (const auto& r : registry().all()) {
+    Json entry{{"id", r.id},
+               {"summary", r.summary},
+               {"function", r.function},
+               {"inputs", fields_json(r.inputs)},
+               {"outputs", fields_json(r.outputs)}};
+    add_grade(entry, r.id);
+    list.push_back(std::move(entry));
+  }
+  return Json{{"format", "pathref-rules"}, {"format_version", 1}, {"rules", list}};
 }
 
 }  // namespace pathref::rules

@@ -49,6 +49,20 @@ class Registry {
 /// The registry of every rule the library implements (built once, sorted by id).
 [[nodiscard]] const Registry& registry();
 
+/// UsageError when `input` has a key that is not one of the rule's inputs, naming the valid ones
+/// (spec/cli.md#eval): a misspelt key must never be ignored in favour of the default. A rule with
+/// a placeholder input (`<parameter>`, checked by the planner itself) admits every key.
+void check_inputs(const Rule& rule, const Json& input);
+
+/// Sets "grade" (A/B/C) and "reconstructed": true on `doc` when `id` is a reconstructed rule
+/// (spec/index; docs/versioning.md#confidence-grades); leaves it unchanged otherwise.
+void add_grade(Json& doc, const std::string& id);
+
+/// Every rule with its inputs and outputs (and grade): the "pathref-rules" v1 object of
+/// `pathref eval --list --json` and `pathref.rules()` (spec/cli.md#eval), without the version
+/// stamp the CLI adds.
+[[nodiscard]] Json rule_list_json();
+
 // ---- JSON argument helpers for adapters (throw UsageError naming the missing/bad key) ----
 [[nodiscard]] const Json& arg(const Json& input, const char* key);
 [[nodiscard]] double arg_number(const Json& input, const char* key);
