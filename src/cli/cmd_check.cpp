@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "pathref/core/version.hpp"
 #include "pathref/core/error.hpp"
 #include "pathref/io/path_check.hpp"
 #include "pathref/io/path_file.hpp"
@@ -198,7 +199,7 @@ int run_check(const CheckOptions& o) {
   if (o.json) {
     fmt::print("{}\n", doc.dump(2));
   } else {
-    fmt::print("pathref {} check\n", PATHREF_VERSION);
+    fmt::print("pathref {} check\n", std::string(pathref::version()));
     fmt::print("  map         {} ({}{}, {}x{}, {} blocked cells)\n", map_json["name"].get<std::string>(),
                map_json["source"].get<std::string>(),
                map_json["file"].is_null() ? std::string() : " " + map_json["file"].get<std::string>(),

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "pathref/core/version.hpp"
 #include "pathref/core/error.hpp"
 #include "pathref/golden/runner.hpp"
 
@@ -219,7 +220,7 @@ int run_conform(const ConformOptions& o) {
   std::string why;
   std::optional<std::string> fatal;  // the program failed the session: every later vector fails
   std::optional<Json> implemented;   // the hello's "rules", when given
-  const Json hello{{"protocol", "pathref-conform"}, {"version", 1}, {"pathref_version", PATHREF_VERSION}};
+  const Json hello{{"protocol", "pathref-conform"}, {"version", 1}, {"pathref_version", std::string(pathref::version())}};
   std::optional<std::string> reply;
   if (prog.send(hello.dump(), timeout, why) && (reply = prog.receive(timeout, why))) {
     const Json h = Json::parse(*reply, nullptr, false);
@@ -325,7 +326,7 @@ int run_conform(const ConformOptions& o) {
   if (o.json) {
     fmt::print("{}\n", doc.dump(2));
   } else {
-    fmt::print("pathref {} conform: {} on {}\n", PATHREF_VERSION, o.exec, o.dir);
+    fmt::print("pathref {} conform: {} on {}\n", std::string(pathref::version()), o.exec, o.dir);
     fmt::print("{:<40} {:>6} {:>6} {:>6}\n", "rule", "pass", "fail", "skip");
     for (const auto& [rule, t] : tally) fmt::print("{:<40} {:>6} {:>6} {:>6}\n", rule, t.pass, t.fail, t.skip);
     fmt::print("{:<40} {:>6} {:>6} {:>6}\n", "total", total.pass, total.fail, total.skip);

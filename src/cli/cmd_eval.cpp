@@ -75,10 +75,7 @@ void add_eval_command(CLI::App& app, Action& run) {
       if (rule == nullptr)
         throw UsageError("unknown rule '" + rule_id + "' (see pathref eval --list)");
       const rules::Json input = parse_assignments(assignments);
-      rules::check_inputs(*rule, input);
-      const rules::Json out = rule->eval(input);
-      rules::Json doc{{"rule", rule->id}, {"input", input}, {"output", out}};
-      rules::add_grade(doc, rule->id);
+      rules::Json doc = rules::evaluate(*rule, input);
       stamp_version(doc);
       fmt::print("{}\n", doc.dump(2));
       return 0;

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "pathref/core/version.hpp"
 #include "pathref/continuous/srrt.hpp"
 #include "pathref/core/error.hpp"
 #include "pathref/io/builtin_maps.hpp"
@@ -156,7 +157,7 @@ std::string why_not_found(const planners::Result& r) {
 /// The human-readable report of a run: what was used, then what came out.
 void print_report(const io::PlanRecord& rec, const grid::Grid& g, const Json& j,
                   bool policy_is_default) {
-  fmt::print("pathref {} plan\n", PATHREF_VERSION);
+  fmt::print("pathref {} plan\n", std::string(pathref::version()));
   fmt::print("  map         {} ({}{}, {}x{}, {} blocked cells)\n", rec.map.name, rec.map.kind,
              rec.map.file ? " " + *rec.map.file : std::string(), g.width(), g.height(),
              g.blocked_count());

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "pathref/core/version.hpp"
 #include "pathref/continuous/srrt.hpp"
 #include "pathref/core/error.hpp"
 #include "pathref/geometry/decimal.hpp"
@@ -232,7 +233,7 @@ int run_continuous_plan(const ContinuousPlanArgs& o) {
   if (o.json) {
     fmt::print("{}\n", j.dump(2));
   } else {
-    fmt::print("pathref {} plan\n", PATHREF_VERSION);
+    fmt::print("pathref {} plan\n", std::string(pathref::version()));
     fmt::print("  map         {}\n", cm.description);
     fmt::print("  world       [{}, {}] x [{}, {}]\n", om.lower().x, om.upper().x, om.lower().y, om.upper().y);
     fmt::print("  algo        {} (continuous plane, exact collision checks)\n", o.algo);

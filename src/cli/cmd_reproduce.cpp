@@ -21,6 +21,7 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
+#include "pathref/core/version.hpp"
 #include "pathref/core/error.hpp"
 #include "pathref/grid/grid.hpp"
 #include "pathref/io/map_file.hpp"
@@ -167,7 +168,7 @@ reproduce::Provenance provenance(const std::string& command) {
   p.build_type = build_type();
   p.date_utc = iso_now_utc();
   p.machine = machine_description();
-  p.pathref_version = PATHREF_VERSION;
+  p.pathref_version = std::string(pathref::version());
   return p;
 }
 

@@ -15,6 +15,7 @@
 #include <thread>
 
 #include "commands.hpp"
+#include "pathref/core/version.hpp"
 #include "pathref/io/json_text.hpp"
 #include "pathref/io/map_file.hpp"
 #include "pathref/core/error.hpp"
@@ -91,7 +92,7 @@ int run(const Options& o) {
 #else
                                          "assertions on",
 #endif
-                                         now_utc(), machine(), PATHREF_VERSION};
+                                         now_utc(), machine(), std::string(pathref::version())};
   cfg.progress = [](const std::string& line) { fmt::print(stderr, "[reproduce] {}\n", line); };
   std::string sk_file;
   if (o.sklearn == "auto") {

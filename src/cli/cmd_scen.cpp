@@ -18,6 +18,7 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
+#include "pathref/core/version.hpp"
 #include "pathref/core/error.hpp"
 #include "pathref/io/map_file.hpp"
 #include "pathref/io/movingai.hpp"
@@ -221,7 +222,7 @@ int run_scen(const ScenOptions& o) {
                    {"clock", "thread CPU time (user + system) of each planner call, summed; wall time of all runs"}};
     fmt::print("{}\n", j.dump(2));
   } else {
-    fmt::print("pathref {} scen {}\n", PATHREF_VERSION, o.file);
+    fmt::print("pathref {} scen {}\n", std::string(pathref::version()), o.file);
     fmt::print("  version     {} ({} columns)\n", sf.version, sf.version == 1 ? 9 : 7);
     for (const auto& [key, m] : maps)
       fmt::print("  map         {} ({}x{}, {} blocked cells)\n", m.path, m.map.grid.width(), m.map.grid.height(),

@@ -15,7 +15,7 @@ int main(int argc, char** argv) {
   pathref::geometry::install_inflation_rules();
   // cin2021 S-RRT rules (exact collision checks in pathref_geometry) likewise.
   pathref::geometry::install_srrt_rules();
-  CLI::App app{"pathref " PATHREF_VERSION
+  CLI::App app{"pathref " + std::string(pathref::version()) +
                " - formally specified reference implementation of grid path planners"};
   app.require_subcommand(1);
   // --version: pathref's version and the golden-vector set it was built with (docs/versioning.md).

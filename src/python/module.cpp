@@ -73,10 +73,7 @@ std::string eval_rule(const std::string& rule_id, const std::string& input_json)
   const pathref::rules::Rule* rule = pathref::rules::registry().find(rule_id);
   if (rule == nullptr) throw pathref::UsageError("unknown rule '" + rule_id + "' (see pathref.rules())");
   const Json input = Json::parse(input_json);
-  pathref::rules::check_inputs(*rule, input);
-  Json doc{{"rule", rule->id}, {"input", input}, {"output", rule->eval(input)}};
-  pathref::rules::add_grade(doc, rule->id);
-  return doc.dump();
+  return pathref::rules::evaluate(*rule, input).dump();
 }
 
 std::string plan(const Blocked& blocked, const std::tuple<std::int64_t, std::int64_t>& start,

@@ -105,6 +105,13 @@ void add_grade(Json& doc, const std::string& id) {
   }
 }
 
+Json evaluate(const Rule& rule, const Json& input) {
+  check_inputs(rule, input);
+  Json doc{{"rule", rule.id}, {"input", input}, {"output", rule.eval(input)}};
+  add_grade(doc, rule.id);
+  return doc;
+}
+
 namespace {
 Json fields_json(const std::vector<Field>& fields) {
   Json a = Json::array();

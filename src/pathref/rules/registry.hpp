@@ -58,6 +58,11 @@ void check_inputs(const Rule& rule, const Json& input);
 /// (spec/index; docs/versioning.md#confidence-grades); leaves it unchanged otherwise.
 void add_grade(Json& doc, const std::string& id);
 
+/// One evaluation as `pathref eval RULE` and `pathref.eval` report it (spec/cli.md#eval): checks
+/// `input` (check_inputs), runs the rule and returns {"rule", "input", "output"} plus the grade of a
+/// reconstructed rule (add_grade), without the version stamp the CLI adds.
+[[nodiscard]] Json evaluate(const Rule& rule, const Json& input);
+
 /// Every rule with its inputs and outputs (and grade): the "pathref-rules" v1 object of
 /// `pathref eval --list --json` and `pathref.rules()` (spec/cli.md#eval), without the version
 /// stamp the CLI adds.
