@@ -2,6 +2,8 @@
 // (list the built-in maps, print one as pathref-grid text). Spec: spec/cli.md#plan, #maps.
 #include <fmt/core.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <fstream>
 #include <optional>
@@ -11,6 +13,7 @@
 #include "commands.hpp"
 #include "pathref/continuous/srrt.hpp"
 #include "pathref/core/error.hpp"
+#include "pathref/equations/metrics.hpp"
 #include "pathref/io/builtin_maps.hpp"
 #include "pathref/io/grid_text.hpp"
 #include "pathref/io/map_file.hpp"
@@ -243,9 +246,15 @@ std::string plan_svg(const io::PlanRecord& rec, const grid::Grid& g, const Json&
     return s;
   };
   series.push_back(curve(rec.algo + " best", r.best_per_iteration));
+  series.back().absent = "no path in any iteration";
+  if (std::any_of(r.best_per_iteration.begin(), r.best_per_iteration.end(), [](double v) { return std::isfinite(v); }))
+    series.back().marks.push_back(static_cast<double>(metrics::iterations_to_converge(r.best_per_iteration)));
   if (!r.mean_per_iteration.empty()) series.push_back(curve(rec.algo + " mean", r.mean_per_iteration));
   return io::svg_map_and_chart(g, rec.start, rec.goal, layers, title, series,
-                               io::ChartOptions{"Convergence", "iteration", "path length"});
+                               io::ChartOptions{"Convergence", "iteration", "path length",
+                                                "Ring: the iteration where the best length reaches its final value "
+                                                "(metrics.converge).",
+                                                "A line is broken at iterations without a path (no finite length)."});
 }
 
 /// `pathref plan`: exit 0 when a path was found, 1 when the goal is unreachable.
