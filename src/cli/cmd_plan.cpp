@@ -323,7 +323,7 @@ int run_plan(const PlanOptions& o) {
   const Json j = io::plan_to_json(rec, g);
   // Files first: a file that cannot be written is an error (exit 2) before anything is printed.
   if (!o.json_out.empty()) write_output_file(o.json_out, j.dump(2) + "\n");
-  if (!o.svg.empty()) write_output_file(o.svg, plan_svg(rec, g, j));
+  if (!o.svg.empty()) write_figure(o.svg, plan_svg(rec, g, j));
   if (o.json)
     fmt::print("{}\n", j.dump(2));
   else
@@ -360,7 +360,7 @@ int run_maps(const std::string& name, const std::string& svg) {
   fmt::print("{}", b->text);
   if (!svg.empty()) {
     const io::MapFile m = io::load_builtin_map(*b);
-    write_output_file(svg, io::svg_map(m.grid, m.start, m.goal, {},
+    write_figure(svg, io::svg_map(m.grid, m.start, m.goal, {},
                                      fmt::format("{} {}x{}", b->name, m.grid.width(), m.grid.height())));
   }
   return 0;
