@@ -149,28 +149,34 @@ std::string Scale::label(double v) const {
   return fmt::format("{:.{}f}", v, decimals);
 }
 
-Scale linear_scale(double lo, double hi) {
-  if (!(hi > lo)) {  // a flat line: widen symmetrically so it sits mid-height
-    const double pad = lo == 0.0 ? 1.0 : std::abs(lo) * 0.1;
-    lo -= pad;
-    hi += pad;
-  } else {
-    const double pad = 0.05 * (hi - lo);
-    lo -= pad;
-    hi += pad;
+Scale linear_scale(double lo, double hi, bool pad) {
+  if (!(hi > lo)) {  // a single value: widen symmetrically so it sits mid-range
+    const double w = lo == 0.0 ? 1.0 : std::abs(lo) * 0.1;
+    lo -= w;
+    hi += w;
+  } else if (pad) {
+    const double w = 0.05 * (hi - lo);
+    lo -= w;
+    hi += w;
   }
   const double raw = (hi - lo) / 5.0;
   const double mag = std::pow(10.0, std::floor(std::log10(raw)));
   const double norm = raw / mag;
   const double step = (norm <= 1.0 ? 1.0 : norm <= 2.0 ? 2.0 : norm <= 5.0 ? 5.0 : 10.0) * mag;
-  const double first = std::floor(lo / step) * step;
-  const double last = std::ceil(hi / step) * step;
-  const int count = static_cast<int>(std::lround((last - first) / step)) + 1;
   Scale s;
-  s.lo = first;
-  s.hi = first + step * (count - 1);
-  for (int i = 0; i < count; ++i) s.ticks.push_back(first + step * i);
   s.decimals = std::max(0, -static_cast<int>(std::floor(std::log10(step) + 1e-9)));
+  if (pad) {  // widened outwards to whole steps
+    const double first = std::floor(lo / step) * step;
+    const int count = static_cast<int>(std::lround((std::ceil(hi / step) * step - first) / step)) + 1;
+    for (int i = 0; i < count; ++i) s.ticks.push_back(first + step * i);
+    s.lo = s.ticks.front();
+    s.hi = s.ticks.back();
+  } else {  // exactly [lo, hi], ticks at the whole steps inside
+    s.lo = lo;
+    s.hi = hi;
+    const double first = std::ceil(lo / step - 1e-9) * step;
+    for (int i = 0; first + step * i <= hi + 1e-9 * step; ++i) s.ticks.push_back(first + step * i);
+  }
   return s;
 }
 
@@ -312,6 +318,9 @@ std::string swatch(const LegendEntry& e, double x, double y) {
                                   : (e.dasharray.empty() ? std::string() : fmt::format(" stroke-dasharray=\"{}\"", e.dasharray)));
     case Swatch::square:
       return fmt::format("<rect x=\"{}\" y=\"{}\" width=\"14\" height=\"14\" fill=\"{}\"/>", num(cx - 7.0), num(y), c);
+    case Swatch::box:
+      return fmt::format("<rect x=\"{}\" y=\"{}\" width=\"10\" height=\"10\" fill=\"none\" stroke=\"{}\" stroke-width=\"1.5\"/>",
+                         num(cx - 5.0), num(y + 2.0), c);
     case Swatch::dot:
       return fmt::format("<circle cx=\"{}\" cy=\"{}\" r=\"6\" fill=\"{}\" stroke=\"black\"/>", num(cx), num(cy), c);
     case Swatch::ring:

@@ -79,8 +79,9 @@ struct Box {
 };
 
 /// figures.axes: an axis range with its ticks. Linear: a "nice" step (1, 2 or 5 × 10^k, about
-/// five intervals) over the data range widened by 5 % on each side and then outwards to whole
-/// steps, so no data point lies on the frame. Log: decades (with 2 and 5 between when the range
+/// five intervals); with `pad` (y axes) over the data range widened by 5 % on each side and then
+/// outwards to whole steps, so no data point lies on the frame; without (x axes) exactly the data
+/// range, ticks at the whole steps inside it. Log: decades (with 2 and 5 between when the range
 /// spans at most two decades).
 struct Scale {
   double lo = 0.0, hi = 1.0;
@@ -92,7 +93,7 @@ struct Scale {
   /// The tick label of v.
   [[nodiscard]] std::string label(double v) const;
 };
-[[nodiscard]] Scale linear_scale(double lo, double hi);
+[[nodiscard]] Scale linear_scale(double lo, double hi, bool pad = true);
 /// Pre: 0 < lo <= hi.
 [[nodiscard]] Scale log_scale(double lo, double hi);
 /// figures.log: whether values in [lo, hi] are drawn on a log axis: all positive and hi ≥ 20 lo
@@ -118,7 +119,7 @@ class LabelPlacer {
 };
 
 /// A legend swatch.
-enum class Swatch { line, square, dot, ring, triangle, cross };
+enum class Swatch { line, square, box, dot, ring, triangle, cross };
 /// figures.legend: one legend entry. `absent`: the series drew nothing; it is listed with a grey
 /// swatch and its label (which says why, e.g. "GA — no feasible run").
 struct LegendEntry {

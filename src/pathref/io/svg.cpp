@@ -193,7 +193,7 @@ void chart_panel(plot::Figure& fig, const std::vector<Series>& series, const Cha
   }
   const bool log = opt.y_scale == YScale::log ? ymin > 0.0
                                               : opt.y_scale == YScale::automatic && plot::wants_log(ymin, ymax);
-  const plot::Scale xs = plot::linear_scale(xmin, xmax);
+  const plot::Scale xs = plot::linear_scale(xmin, xmax, false);
   const plot::Scale ys = log ? plot::log_scale(ymin, ymax) : plot::linear_scale(ymin, ymax);
   fig.title(opt.title);
   const Area a = plot_area(fig, ys, plot::text_width(xs.label(xs.ticks.back())) / 2.0 + 2.0);

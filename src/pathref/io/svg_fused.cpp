@@ -59,7 +59,7 @@ std::string svg_fused(const dwa::FusedScenario& s, const dwa::FusedResult& r) {
                      "stroke-width=\"1.5\"/>\n",
                      num(x - 3.5), num(y - 3.5), plot::kBlue);
   }
-  if (!r.key_nodes.empty()) legend.push_back({"key node", plot::Swatch::ring, plot::kBlue});
+  if (!r.key_nodes.empty()) legend.push_back({"key node", plot::Swatch::box, plot::kBlue});
   std::vector<std::pair<double, double>> track;
   for (const auto& smp : r.samples) track.push_back(P(Point{smp.pose.x, smp.pose.y}));
   if (!track.empty()) b += plot::polyline(track, "trajectory", plot::kBlue, 2.5);
