@@ -384,6 +384,12 @@ int run_sensors2023_cmd(const ReproduceOptions& o) {
 }
 
 int run_srrt_cmd(const ReproduceOptions& o) {
+  if (o.redraw) {
+    const Json doc = earlier_doc(o, "cin2021-srrt");
+    return write_outputs(doc, o.out_dir, "cin2021-srrt",
+                         reproduce::cin2021_srrt_markdown(doc, "cin2021-srrt", "cin2021-srrt/reproduce.json"),
+                         reproduce::cin2021_srrt_figures(doc));
+  }
   reproduce::SrrtReproduceOptions so;
   so.runs = o.runs.empty() ? (o.quick ? 3 : 20) : parse_int(o.runs, "--runs", 2, 1000);
   so.seed = static_cast<std::uint32_t>(parse_int(o.seed, "--seed", 0, 4294967295LL));
@@ -484,6 +490,9 @@ void add_reproduce_command(CLI::App& app, Action& run) {
       ->type_name("DIR")
       ->capture_default_str();
   r->add_flag("--quick", srrt.quick, "3 runs: a smoke test that finishes in seconds");
+  r->add_flag("--redraw", srrt.redraw,
+              "run nothing but each scene's first two runs: write the report and its figures again from "
+              "OUT_DIR/cin2021-srrt/reproduce.json of an earlier run");
   r->callback([&run] { run = [] { return run_srrt_cmd(srrt); }; });
   static std::string job_text;
   auto* j = cmd->add_subcommand("run-job", "Run one job written by --emit-jobs and print its result (JSON) on stdout");
