@@ -66,16 +66,40 @@ std::string svg_simulation(const sim::Scenario& s, const sim::SimResult& r) {
   }
   if (!r.obstacle_tracks.empty())
     legend.push_back({"moving obstacle (start ring)", plot::Swatch::line, "black", "1 3"});
-  // figures.waits: one marker per wait interval, at the place of the wait, labelled with its duration.
+  // figures.waits: one marker per wait, at the place of the wait, labelled with its duration;
+  // consecutive waits less than a robot diameter apart share one marker ("N waits, T s").
+  struct WaitMark {
+    sim::Vec2 p;
+    double total = 0.0;
+    int count = 0;
+  };
+  std::vector<WaitMark> wait_marks;
   for (const sim::Wait& wt : r.waits) {
     const auto at = std::find_if(r.trajectory.begin(), r.trajectory.end(), [&](const sim::Sample& q) { return q.t == wt.start; });
     if (at == r.trajectory.end()) continue;
-    const auto [x, y] = P(at->p);
-    const double rad = std::max(4.0, s.robot_radius * f.scale);
+    if (!wait_marks.empty()) {
+      const sim::Vec2 d{at->p.x - wait_marks.back().p.x, at->p.y - wait_marks.back().p.y};
+      if (d.x * d.x + d.y * d.y < 4.0 * s.robot_radius * s.robot_radius) {
+        wait_marks.back().total += wt.end - wt.start;
+        wait_marks.back().count += 1;
+        continue;
+      }
+    }
+    wait_marks.push_back({at->p, wt.end - wt.start, 1});
+  }
+  const double wait_r = std::max(4.0, s.robot_radius * f.scale);
+  for (const WaitMark& w : wait_marks) {  // every ring first, so no label covers a later ring
+    const auto [x, y] = P(w.p);
     b += fmt::format("<circle class=\"wait\" cx=\"{}\" cy=\"{}\" r=\"{}\" fill=\"none\" stroke=\"{}\" stroke-width=\"2\"/>\n",
-                     num(x), num(y), num(rad), plot::kOrange);
-    labels.reserve(plot::Box{x - rad, y - rad, x + rad, y + rad});
-    label_svg += labels.place(x, y, fmt::format("wait {:.1f} s", wt.end - wt.start), rad + 2.0, "wait-label", "#A06000");
+                     num(x), num(y), num(wait_r), plot::kOrange);
+    labels.reserve(plot::Box{x - wait_r, y - wait_r, x + wait_r, y + wait_r});
+  }
+  for (const WaitMark& w : wait_marks) {
+    const auto [x, y] = P(w.p);
+    label_svg += labels.place(x, y,
+                              w.count == 1 ? fmt::format("wait {:.1f} s", w.total)
+                                           : fmt::format("{} waits, {:.1f} s", w.count, w.total),
+                              wait_r + 2.0, "wait-label", "#A06000");
   }
   if (!r.waits.empty()) legend.push_back({"wait (duration)", plot::Swatch::ring, plot::kOrange});
   // figures.time-marks: on the robot's trajectory and on every obstacle's track at the same samples,
