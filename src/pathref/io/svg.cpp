@@ -264,6 +264,7 @@ void bar_panel(plot::Figure& fig, const BarChart& c) {
     for (int t = 0; t <= 10; ++t) ys.ticks.push_back(c.y_max * t / 10.0);
   }
   fig.title(c.title);
+  fig.skip(kFont + 2.0);  // room for the values above the tallest bars
   const Area a = plot_area(fig, ys, 2.0);
   std::string b = "<g class=\"panel\">\n" + y_axis(fig, a, ys, c.y_label);
   const double gw = a.pw / static_cast<double>(std::max<std::size_t>(1, c.groups.size()));
@@ -279,9 +280,13 @@ void bar_panel(plot::Figure& fig, const BarChart& c) {
       const double x = a.x0 + gw * (static_cast<double>(gi) + 0.08) + bw * static_cast<double>(k);
       b += fmt::format("<rect class=\"bar\" x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"{}\"/>\n", num(x + 1.0),
                        num(py(v)), num(bw - 2.0), num(a.top + a.ph - py(v)), fill);
-      const std::string label = fmt::format("{:.{}f}", v, c.value_decimals);
-      if (plot::text_width(label) <= bw + 4.0)  // the value above its bar, where it fits
+      // the value above its bar, with fewer decimals when needed to fit its width; else none
+      for (int d = c.value_decimals; d >= 0; --d) {
+        const std::string label = fmt::format("{:.{}f}", v, d);
+        if (plot::text_width(label) > bw + 4.0) continue;
         b += plot::text(x + bw / 2.0, py(v) - 3.0, label, kFont, "middle", "value");
+        break;
+      }
     }
   }
   for (std::size_t gi = 0; gi < c.groups.size(); ++gi)
