@@ -52,7 +52,7 @@ struct ChartOptions {
 
 /// A grouped bar chart: one group per `groups` entry, one bar per series in `bars` (bars[k].y[g] is
 /// the value of series k in group g; x unused; the first series grey, the others in the palette),
-/// each value printed above its bar where it fits; y from 0 to `y_max` (ticks every tenth), or to
+/// each value printed above its bar (with fewer decimals when needed to fit); y from 0 to `y_max` (ticks every tenth), or to
 /// the data's nice maximum when y_max is NaN. Title, axis, legend below and caption as
 /// svg_line_chart.
 struct BarChart {
