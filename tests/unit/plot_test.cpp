@@ -45,6 +45,8 @@ TEST_CASE("figures.title: wrapped to the width, paths shown by their last compon
   CHECK(plot::strip_paths("../shared/data/maps/a.map 20x20: astar") == "a.map 20x20: astar");
   CHECK(plot::strip_paths("no path here") == "no path here");
   CHECK(plot::strip_paths("dir/") == "dir/");  // nothing after the slash: kept
+  CHECK(plot::strip_paths("η = 1/d, km/h") == "η = 1/d, km/h");  // not paths
+  CHECK(plot::strip_paths("maps/a.map a/b/c") == "a.map c");
   const auto lines = plot::wrap("one two three four five six seven eight nine ten", 10.0, 60.0);
   REQUIRE(lines.size() > 1);
   for (const auto& l : lines) CHECK(plot::text_width(l, 10.0) <= 60.0);

@@ -73,7 +73,15 @@ std::string strip_paths(std::string_view text) {
     const std::size_t j = std::min(text.find(' ', i), text.size());
     std::string_view word = text.substr(i, j - i);
     const auto slash = word.find_last_of('/');
-    if (slash != std::string_view::npos && slash + 1 < word.size()) word = word.substr(slash + 1);
+    if (slash != std::string_view::npos && slash + 1 < word.size()) {
+      // a path: starts at a root or a dot folder, has two or more slashes, or ends in a file name
+      // with an extension ("maps/a.map"); "1/d" and "km/h" are not paths
+      const std::string_view last = word.substr(slash + 1);
+      const bool path_like = word.front() == '/' || word.substr(0, 2) == "./" || word.substr(0, 3) == "../" ||
+                             std::count(word.begin(), word.end(), '/') >= 2 ||
+                             (last.find('.') != std::string_view::npos && last.find('.') + 1 < last.size());
+      if (path_like) word = last;
+    }
     out += word;
     if (j < text.size()) out += ' ';
     i = j + 1;

@@ -39,8 +39,10 @@ inline constexpr double kMargin = 10.0;
 /// The lines of `text` broken at spaces so that each is at most `max_width` wide (a word longer
 /// than a line is cut between characters). Empty text gives no lines.
 [[nodiscard]] std::vector<std::string> wrap(std::string_view text, double size, double max_width);
-/// figures.title: `text` with every word that contains '/' replaced by its last component
-/// ("../shared/data/a.map" -> "a.map"), so a title never shows a file path.
+/// figures.title: `text` with every path-like word replaced by its last component
+/// ("../shared/data/a.map" -> "a.map"), so a title never shows a file path. A word is path-like
+/// when it contains '/' and starts with "/", "./" or "../", or has two or more '/', or its last
+/// component has an extension ("maps/a.map"); "1/d" and "km/h" are kept.
 [[nodiscard]] std::string strip_paths(std::string_view text);
 /// A coordinate with two decimals (deterministic, short).
 [[nodiscard]] std::string num(double v);
