@@ -134,7 +134,7 @@ TEST_CASE("figures.labels: labels stay inside the box and off each other, or are
   const std::string b = p.place(50.0, 50.0, "13", 3.0, "t", "black");
   REQUIRE_FALSE(a.empty());
   REQUIRE_FALSE(b.empty());
-  CHECK(attr_values(a, "x") != attr_values(b, "x") || attr_values(a, "y") != attr_values(b, "y"));
+  CHECK((attr_values(a, "x") != attr_values(b, "x") || attr_values(a, "y") != attr_values(b, "y")));
   // near the right edge: placed to the left of the point
   const std::string c = p.place(98.0, 20.0, "wide", 3.0, "t", "black");
   REQUIRE_FALSE(c.empty());
