@@ -217,19 +217,21 @@ std::string LabelPlacer::place(double x, double y, std::string_view label, doubl
                                std::string_view cls, std::string_view fill, double size) {
   const double w = text_width(label, size);
   const double asc = 0.76 * size, desc = 0.24 * size;
-  // candidate baselines (x is the start of the text)
-  const std::array<std::pair<double, double>, 6> cand = {{{x + gap, y - gap},
-                                                          {x + gap, y + gap + asc},
-                                                          {x - gap - w, y - gap},
-                                                          {x - gap - w, y + gap + asc},
-                                                          {x - w / 2.0, y - gap - desc},
-                                                          {x - w / 2.0, y + gap + asc}}};
-  for (const auto& [tx, ty] : cand) {
-    const Box b{tx, ty - asc, tx + w, ty + desc};
-    if (!b.inside(canvas_)) continue;
-    if (std::any_of(taken_.begin(), taken_.end(), [&](const Box& t) { return t.overlaps(b); })) continue;
-    taken_.push_back(b);
-    return text(tx, ty, label, size, "start", cls, fill);
+  for (const double g : {gap, gap + size, gap + 2.0 * size}) {  // nearest ring of positions first
+    // candidate baselines (x is the start of the text)
+    const std::array<std::pair<double, double>, 6> cand = {{{x + g, y - g},
+                                                            {x + g, y + g + asc},
+                                                            {x - g - w, y - g},
+                                                            {x - g - w, y + g + asc},
+                                                            {x - w / 2.0, y - g - desc},
+                                                            {x - w / 2.0, y + g + asc}}};
+    for (const auto& [tx, ty] : cand) {
+      const Box b{tx, ty - asc, tx + w, ty + desc};
+      if (!b.inside(canvas_)) continue;
+      if (std::any_of(taken_.begin(), taken_.end(), [&](const Box& t) { return t.overlaps(b); })) continue;
+      taken_.push_back(b);
+      return text(tx, ty, label, size, "start", cls, fill);
+    }
   }
   return "";
 }
