@@ -217,7 +217,7 @@ std::string LabelPlacer::place(double x, double y, std::string_view label, doubl
                                std::string_view cls, std::string_view fill, double size) {
   const double w = text_width(label, size);
   const double asc = 0.76 * size, desc = 0.24 * size;
-  for (const double g : {gap, gap + size, gap + 2.0 * size}) {  // nearest ring of positions first
+  for (const double g : {gap, gap + 0.7 * size}) {  // the nearer ring of positions first
     // candidate baselines (x is the start of the text)
     const std::array<std::pair<double, double>, 6> cand = {{{x + g, y - g},
                                                             {x + g, y + g + asc},

@@ -111,8 +111,8 @@ class LabelPlacer {
   /// Reserve a box (e.g. a marker) that later labels avoid.
   void reserve(const Box& b) { taken_.push_back(b); }
   /// Tries right-above, right-below, left-above, left-below, above, below of (x, y) at distance
-  /// `gap`, then at gap + size and gap + 2 size; returns the <text> element, or "" when no
-  /// position fits.
+  /// `gap`, then at gap + 0.7 size (past a marker ring; further out a label would be ambiguous);
+  /// returns the <text> element, or "" when no position fits.
   [[nodiscard]] std::string place(double x, double y, std::string_view label, double gap,
                                   std::string_view cls, std::string_view fill, double size = kFont);
 
