@@ -6,7 +6,8 @@ PATHREF_PACKAGES=(cmake ninja-build g++ clang libclang-rt-14-dev python3
   libeigen3-dev librapidcheck-dev catch2 libcgal-dev libgmp-dev libmpfr-dev
   libfmt-dev nlohmann-json3-dev libcli11-dev libbenchmark-dev
   libsvm-dev python3-sklearn python3-scipy parallel
-  pybind11-dev python3-dev python3-numpy python3-pytest)
+  pybind11-dev python3-dev python3-numpy python3-pytest
+  librsvg2-bin fonts-dejavu-core)
 missing=()
 for p in "${PATHREF_PACKAGES[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -276,7 +276,7 @@ int run_drive(const DriveOptions& o) {
     print_report(o, p, pt, ks, path->size());
   }
   if (!o.svg_file.empty()) {
-    write_output_file(o.svg_file, profile_svg(pt, ks));
+    write_figure(o.svg_file, profile_svg(pt, ks));
     if (!o.json) fmt::print("wrote {}\n", o.svg_file);
   }
   return 0;

@@ -42,7 +42,7 @@ void add_inflate_command(CLI::App& app, Action& run) {
             "{} inflated by r = {} + {} ({} of {} cells blocked)",
             scene.name.empty() ? std::string("scene") : scene.name, geometry::to_string(scene.radius),
             geometry::to_string(scene.margin), inf.grid.blocked_count(), inf.grid.cell_count());
-        write_output_file(svg_path, io::svg_map(inf.grid, inf.start, inf.goal, {}, title));
+        write_figure(svg_path, io::svg_map(inf.grid, inf.start, inf.goal, {}, title));
       }
       return 0;
     };

@@ -2,6 +2,8 @@
 // (list the built-in maps, print one as pathref-grid text). Spec: spec/cli.md#plan, #maps.
 #include <fmt/core.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <fstream>
 #include <optional>
@@ -12,6 +14,7 @@
 #include "pathref/core/version.hpp"
 #include "pathref/continuous/srrt.hpp"
 #include "pathref/core/error.hpp"
+#include "pathref/equations/metrics.hpp"
 #include "pathref/io/builtin_maps.hpp"
 #include "pathref/io/grid_text.hpp"
 #include "pathref/io/map_file.hpp"
@@ -244,9 +247,15 @@ std::string plan_svg(const io::PlanRecord& rec, const grid::Grid& g, const Json&
     return s;
   };
   series.push_back(curve(rec.algo + " best", r.best_per_iteration));
+  series.back().absent = "no path in any iteration";
+  if (std::any_of(r.best_per_iteration.begin(), r.best_per_iteration.end(), [](double v) { return std::isfinite(v); }))
+    series.back().marks.push_back(static_cast<double>(metrics::iterations_to_converge(r.best_per_iteration)));
   if (!r.mean_per_iteration.empty()) series.push_back(curve(rec.algo + " mean", r.mean_per_iteration));
   return io::svg_map_and_chart(g, rec.start, rec.goal, layers, title, series,
-                               io::ChartOptions{"Convergence", "iteration", "path length"});
+                               io::ChartOptions{"Convergence", "iteration", "path length",
+                                                "Ring: the iteration where the best length reaches its final value "
+                                                "(metrics.converge).",
+                                                "A line is broken at iterations without a path (no finite length)."});
 }
 
 /// `pathref plan`: exit 0 when a path was found, 1 when the goal is unreachable.
@@ -315,7 +324,7 @@ int run_plan(const PlanOptions& o) {
   const Json j = io::plan_to_json(rec, g);
   // Files first: a file that cannot be written is an error (exit 2) before anything is printed.
   if (!o.json_out.empty()) write_output_file(o.json_out, j.dump(2) + "\n");
-  if (!o.svg.empty()) write_output_file(o.svg, plan_svg(rec, g, j));
+  if (!o.svg.empty()) write_figure(o.svg, plan_svg(rec, g, j));
   if (o.json)
     fmt::print("{}\n", j.dump(2));
   else
@@ -352,7 +361,7 @@ int run_maps(const std::string& name, const std::string& svg) {
   fmt::print("{}", b->text);
   if (!svg.empty()) {
     const io::MapFile m = io::load_builtin_map(*b);
-    write_output_file(svg, io::svg_map(m.grid, m.start, m.goal, {},
+    write_figure(svg, io::svg_map(m.grid, m.start, m.goal, {},
                                      fmt::format("{} {}x{}", b->name, m.grid.width(), m.grid.height())));
   }
   return 0;

@@ -229,7 +229,7 @@ int run_continuous_plan(const ContinuousPlanArgs& o) {
   }
   const std::string title = fmt::format("{}: {}, seed {}", cm.map_json.value("name", std::string()), o.algo, seed);
   if (!o.json_out.empty()) write_output_file(o.json_out, j.dump(2) + "\n");
-  if (!o.svg.empty()) write_output_file(o.svg, io::svg_continuous(io::ContinuousScene{om.polygons(), om.radius(), om.lower(), om.upper()}, run, start, goal, title));
+  if (!o.svg.empty()) write_figure(o.svg, io::svg_continuous(io::ContinuousScene{om.polygons(), om.radius(), om.lower(), om.upper()}, run, start, goal, title));
   if (o.json) {
     fmt::print("{}\n", j.dump(2));
   } else {

@@ -24,6 +24,7 @@
 #include "pathref/core/version.hpp"
 #include "pathref/core/error.hpp"
 #include "pathref/grid/grid.hpp"
+#include "pathref/io/json_text.hpp"
 #include "pathref/io/map_file.hpp"
 #include "pathref/reproduce/cin2021.hpp"
 #include "pathref/reproduce/cin2021_srrt.hpp"
@@ -56,6 +57,7 @@ struct ReproduceOptions {
   std::string emit_jobs;        ///< --emit-jobs FILE: write one command per run instead of running
   std::string job_results;      ///< --job-results DIR: where the emitted commands write (default FILE.results)
   std::string merge;            ///< --merge DIR: build the report from the emitted commands' outputs
+  bool redraw = false;          ///< --redraw: rewrite report and figures from OUT_DIR/PAPER/reproduce.json
 };
 
 /// A decimal integer in [lo, hi], digits only (leading zeros are decimal); UsageError otherwise.
@@ -223,8 +225,17 @@ std::map<std::string, Json> read_job_results(const std::string& dir) {
 /// Runs `produce` under the execution that o's --jobs, --emit-jobs and --merge select
 /// (spec reproduce.execution) and hands the document to `write`; with --emit-jobs writes the
 /// commands instead and no report.
-int execute(const ReproduceOptions& o, const std::function<Json()>& produce,
+/// --redraw: the document of an earlier run, read back from OUT_DIR/PAPER/reproduce.json (nothing is
+/// run; the report and the figures are written again from it, e.g. after a change of the figures).
+Json earlier_doc(const ReproduceOptions& o, const std::string& paper) {
+  if (!o.emit_jobs.empty() || !o.merge.empty()) throw UsageError("--redraw excludes --emit-jobs and --merge");
+  const std::string f = (std::filesystem::path(o.out_dir) / paper / "reproduce.json").string();
+  return io::parse_json_text(io::read_text_file(f, "reproduction document"), f);
+}
+
+int execute(const ReproduceOptions& o, const std::string& paper, const std::function<Json()>& produce,
             const std::function<int(const Json&)>& write) {
+  if (o.redraw) return write(earlier_doc(o, paper));
   if (!o.emit_jobs.empty() && !o.merge.empty()) throw UsageError("--emit-jobs and --merge exclude each other");
   reproduce::Execution ex;
   ex.jobs = static_cast<int>(parse_int(o.jobs, "--jobs", 1, 256));
@@ -279,7 +290,7 @@ int run_shi(const ReproduceOptions& o) {
   cfg.provenance.jobs = static_cast<int>(parse_int(o.jobs, "--jobs", 1, 256));
   cfg.provenance.execution = o.merge.empty() ? "run" : "merge";
   cfg.progress = progress_printer();
-  return execute(o, [&] { return reproduce::run_shi2022(cfg); }, [&](const Json& doc) {
+  return execute(o, "shi2022", [&] { return reproduce::run_shi2022(cfg); }, [&](const Json& doc) {
     return write_outputs(doc, o.out_dir, "shi2022", reproduce::shi2022_markdown(doc, "shi2022", "shi2022/reproduce.json"),
                          reproduce::shi2022_figures(doc));
   });
@@ -315,7 +326,7 @@ int run_han_cmd(const ReproduceOptions& o) {
   cfg.provenance.jobs = static_cast<int>(parse_int(o.jobs, "--jobs", 1, 256));
   cfg.provenance.execution = o.merge.empty() ? "run" : "merge";
   cfg.progress = progress_printer();
-  return execute(o, [&] { return reproduce::run_han(cfg); }, [&](const Json& doc) {
+  return execute(o, "han", [&] { return reproduce::run_han(cfg); }, [&](const Json& doc) {
     return write_outputs(doc, o.out_dir, "han", reproduce::han_markdown(doc, "han", "han/reproduce.json"),
                          reproduce::han_figures(doc));
   });
@@ -341,7 +352,7 @@ int run_cin2021_cmd(const ReproduceOptions& o) {
   cfg.provenance.jobs = static_cast<int>(parse_int(o.jobs, "--jobs", 1, 256));
   cfg.provenance.execution = o.merge.empty() ? "run" : "merge";
   cfg.progress = progress_printer();
-  return execute(o, [&] { return reproduce::run_cin2021(cfg); }, [&](const Json& doc) {
+  return execute(o, "cin2021-hga-aco", [&] { return reproduce::run_cin2021(cfg); }, [&](const Json& doc) {
     return write_outputs(doc, o.out_dir, "cin2021-hga-aco",
                          reproduce::cin2021_markdown(doc, "cin2021-hga-aco", "cin2021-hga-aco/reproduce.json"),
                          reproduce::cin2021_figures(doc));
@@ -367,13 +378,19 @@ int run_sensors2023_cmd(const ReproduceOptions& o) {
   reproduce::Execution ex;
   ex.jobs = jobs;
   const reproduce::ExecutionScope scope(ex);
-  const Json doc = reproduce::run_sensors2023(cfg);
+  const Json doc = o.redraw ? earlier_doc(o, "sensors2023") : reproduce::run_sensors2023(cfg);
   return write_outputs(doc, o.out_dir, "sensors2023",
                        reproduce::sensors2023_markdown(doc, "sensors2023", "sensors2023/reproduce.json"),
                        reproduce::sensors2023_figures(doc));
 }
 
 int run_srrt_cmd(const ReproduceOptions& o) {
+  if (o.redraw) {
+    const Json doc = earlier_doc(o, "cin2021-srrt");
+    return write_outputs(doc, o.out_dir, "cin2021-srrt",
+                         reproduce::cin2021_srrt_markdown(doc, "cin2021-srrt", "cin2021-srrt/reproduce.json"),
+                         reproduce::cin2021_srrt_figures(doc));
+  }
   reproduce::SrrtReproduceOptions so;
   so.runs = o.runs.empty() ? (o.quick ? 3 : 20) : parse_int(o.runs, "--runs", 2, 1000);
   so.seed = static_cast<std::uint32_t>(parse_int(o.seed, "--seed", 0, 4294967295LL));
@@ -420,6 +437,8 @@ void add_common(CLI::App* cmd, ReproduceOptions& o) {
       ->type_name("DIR");
   cmd->add_option("--merge", o.merge, "build the report from the results of the --emit-jobs commands in DIR")
       ->type_name("DIR");
+  cmd->add_flag("--redraw", o.redraw,
+                "run nothing: write the report and its figures again from OUT_DIR/PAPER/reproduce.json of an earlier run");
 }
 
 }  // namespace
@@ -472,6 +491,9 @@ void add_reproduce_command(CLI::App& app, Action& run) {
       ->type_name("DIR")
       ->capture_default_str();
   r->add_flag("--quick", srrt.quick, "3 runs: a smoke test that finishes in seconds");
+  r->add_flag("--redraw", srrt.redraw,
+              "run nothing but each scene's first two runs: write the report and its figures again from "
+              "OUT_DIR/cin2021-srrt/reproduce.json of an earlier run");
   r->callback([&run] { run = [] { return run_srrt_cmd(srrt); }; });
   static std::string job_text;
   auto* j = cmd->add_subcommand("run-job", "Run one job written by --emit-jobs and print its result (JSON) on stdout");
@@ -509,6 +531,8 @@ void add_reproduce_command(CLI::App& app, Action& run) {
   k->add_option("--seed", s23.seed, "first random-map seed")->type_name("S")->capture_default_str();
   k->add_option("--out-dir", s23.out_dir, "directory of the report, its JSON and figures")->type_name("DIR")->capture_default_str();
   k->add_flag("--quick", s23.quick, "4 (and 8) random maps: a smoke test");
+  k->add_flag("--redraw", s23.redraw,
+              "run nothing: write the report and its figures again from OUT_DIR/sensors2023/reproduce.json of an earlier run");
   k->callback([&run] { run = [] { return run_sensors2023_cmd(s23); }; });
 }
 

@@ -36,6 +36,7 @@ struct Options {
   std::string python = "/usr/bin/python3";
   std::string jobs = "1";
   bool quick = false;
+  bool redraw = false;  ///< --redraw: rewrite report and figures from OUT_DIR/cin2021-ml/reproduce.json
 };
 
 std::string now_utc() {
@@ -95,7 +96,9 @@ int run(const Options& o) {
                                          now_utc(), machine(), std::string(pathref::version())};
   cfg.progress = [](const std::string& line) { fmt::print(stderr, "[reproduce] {}\n", line); };
   std::string sk_file;
-  if (o.sklearn == "auto") {
+  if (o.redraw) {
+    // nothing is run: the scikit-learn column is already in the document
+  } else if (o.sklearn == "auto") {
     sk_file = (dir / "cin2021-ml" / "sklearn.json").string();
     fs::create_directories(dir / "cin2021-ml");
     const std::string script = "tools/reproduce/cin2021_ml_sklearn.py";
@@ -115,7 +118,10 @@ int run(const Options& o) {
   }
   cfg.provenance.jobs = jobs;
   Json doc;
-  {
+  if (o.redraw) {
+    const std::string f = (dir / "cin2021-ml" / "reproduce.json").string();
+    doc = io::parse_json_text(io::read_text_file(f, "reproduction document"), f);
+  } else {
     reproduce::Execution ex;
     ex.jobs = jobs;
     const reproduce::ExecutionScope scope(ex);
@@ -146,6 +152,8 @@ void add_reproduce_cin2021_ml(CLI::App* reproduce, Action& run_action) {
   c->add_option("--jobs", o.jobs, "forest seeds in parallel on N threads (results identical to --jobs 1 except wall times)")
       ->type_name("N")->capture_default_str();
   c->add_flag("--quick", o.quick, "10-tree forests: a smoke test");
+  c->add_flag("--redraw", o.redraw,
+              "run nothing: write the report and its figures again from OUT_DIR/cin2021-ml/reproduce.json of an earlier run");
   c->callback([&run_action] { run_action = [] { return run(o); }; });
 }
 

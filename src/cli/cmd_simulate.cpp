@@ -60,7 +60,7 @@ int run_fused(const SimulateOptions& o, const std::string& text, const std::stri
       fmt::print("skip: t = {:.6f} s key node {} ({})\n", k.t, k.key, dwa::to_string(k.reason));
   }
   if (!o.svg_file.empty()) {
-    write_output_file(o.svg_file, io::svg_fused(s, r));
+    write_figure(o.svg_file, io::svg_fused(s, r));
     if (!o.json) fmt::print("wrote {}\n", o.svg_file);
   }
   return r.outcome == dwa::Outcome::reached ? 0 : 1;
@@ -116,7 +116,7 @@ int run_simulate(const SimulateOptions& o) {
     fmt::print("time: {:.6f} s\n", r.time);
   }
   if (!o.svg_file.empty()) {
-    write_output_file(o.svg_file, io::svg_simulation(s, r));
+    write_figure(o.svg_file, io::svg_simulation(s, r));
     if (!o.json) fmt::print("wrote {}\n", o.svg_file);
   }
   return (r.reached_goal && r.collisions.empty()) ? 0 : 1;

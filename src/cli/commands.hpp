@@ -57,6 +57,11 @@ void add_reproduce_cin2021_ml(CLI::App* reproduce, Action& run);
 /// `cannot write 'F': REASON` when it cannot (spec/cli.md#output-files). Defined in output.cpp.
 void write_output_file(const std::string& path, const std::string& text);
 
+/// Writes a figure: the SVG text as write_output_file, or, when `path` ends in ".pdf" (any case),
+/// the PDF rendered by rsvg-convert (Debian librsvg2-bin) — UsageError `cannot write 'F': PDF
+/// output needs rsvg-convert ...` when it is not on PATH (spec/figures.md#pdf). Defined in output.cpp.
+void write_figure(const std::string& path, const std::string& svg);
+
 /// Sets "pathref_version" and "golden_set_version" on the JSON object `doc` (every JSON document
 /// pathref prints or writes carries both: docs/versioning.md). Defined in output.cpp.
 void stamp_version(nlohmann::json& doc);

@@ -231,7 +231,6 @@ SrrtReproduction reproduce_cin2021_srrt(const SrrtReproduceOptions& o) {
     const geometry::Scene scene = geometry::parse_scene_json(sc.scene_json, "scene-" + sc.id + ".json");
     const geometry::ObstacleMap map = geometry::ObstacleMap::from_scene(scene);
     out.files.emplace_back("scene-" + sc.id + ".json", sc.scene_json);
-    const io::ContinuousScene cs{map.polygons(), map.radius(), map.lower(), map.upper()};
     Json per_series = Json::object();
     for (const SeriesSpec& p : series_specs()) {
       const Json merged = planners::merge_params(continuous::continuous_defaults(p.algo), p.overrides);
@@ -247,10 +246,6 @@ SrrtReproduction reproduce_cin2021_srrt(const SrrtReproduceOptions& o) {
           all_valid = all_valid && valid;
         }
         runs.push_back(run_record(r, seed, srrt, valid));
-        if (i == 0 && (p.key == "s-rrt" || p.key == "rrt"))
-          out.files.emplace_back(
-              fmt::format("{}-{}.svg", sc.id, p.key),
-              io::svg_continuous(cs, r, sc.start, sc.goal, fmt::format("scene {}: {}, seed {}", sc.id, p.label, seed)));
       }
       Json summary = Json::object();
       std::vector<std::string> keys{"length", "nodes", "turning", "clearance", "time_ms", "tree_size", "iterations"};
@@ -338,6 +333,35 @@ SrrtReproduction reproduce_cin2021_srrt(const SrrtReproduceOptions& o) {
                                     "cin2021.alg1", "cin2021.alg2", "cin2021.srrt.metrics"};
   };
   for (const char* k : {"claims", "reading_claims", "checks"}) attach_rules_all(out.doc[k], srrt_rules);
+  out.doc["provenance"]["total_wall_s"] =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
+  for (auto& f : cin2021_srrt_figures(out.doc)) out.files.push_back(std::move(f));
+  return out;
+}
+
+std::vector<std::pair<std::string, std::string>> cin2021_srrt_figures(const Json& doc) {
+  std::vector<std::pair<std::string, std::string>> out;
+  // Each scene's first S-RRT and RRT run, run again from its recorded seed (deterministic).
+  for (const SrrtScene& sc : cin2021_srrt_scenes()) {
+    const Json* scene_doc = nullptr;
+    for (const Json& s : doc.at("scenes"))
+      if (s.at("id").get<std::string>() == sc.id) scene_doc = &s;
+    if (scene_doc == nullptr) continue;
+    const geometry::Scene scene = geometry::parse_scene_json(sc.scene_json, "scene-" + sc.id + ".json");
+    const geometry::ObstacleMap map = geometry::ObstacleMap::from_scene(scene);
+    const io::ContinuousScene cs{map.polygons(), map.radius(), map.lower(), map.upper()};
+    for (const SeriesSpec& p : series_specs()) {
+      if (p.key != "s-rrt" && p.key != "rrt") continue;
+      const Json& runs = scene_doc->at("series").at(p.key).at("runs");
+      if (runs.empty()) continue;
+      const auto seed = runs[0].at("seed").get<std::uint32_t>();
+      const Json merged = planners::merge_params(continuous::continuous_defaults(p.algo), p.overrides);
+      const continuous::ContinuousRun r = continuous::run_continuous(p.algo, map, sc.start, sc.goal, merged, seed);
+      out.emplace_back(fmt::format("{}-{}.svg", sc.id, p.key),
+                       io::svg_continuous(cs, r, sc.start, sc.goal, fmt::format("scene {}: {}, seed {}", sc.id, p.label, seed)));
+    }
+  }
+  const auto n = doc.at("protocol").at("runs_n").get<std::size_t>();
   // Figure 6's analogue: per run, S-RRT and RRT on every scene (first n runs; gaps where no path).
   struct Fig {
     const char* file;
@@ -350,22 +374,21 @@ SrrtReproduction reproduce_cin2021_srrt(const SrrtReproduceOptions& o) {
                        Fig{"nodes.svg", "nodes", "nodes", "Figure 6 analogue: path nodes per run", "nodes"},
                        Fig{"time.svg", "time_ms", "time_ms", "running time per run (ms, this machine)", "time (ms)"}}) {
     std::vector<io::Series> series;
-    for (const Json& s : out.doc["scenes"])
+    for (const Json& s : doc.at("scenes"))
       for (const auto& [key, field] : {std::pair<const char*, const char*>{"s-rrt", f.srrt_key}, {"rrt", f.rrt_key}}) {
-        io::Series se{fmt::format("{} {}", s["id"].get<std::string>(), std::string(key) == "s-rrt" ? "S-RRT" : "RRT"), {}, {}};
-        const Json& runs = s["series"][key]["runs"];
+        io::Series se{fmt::format("{} {}", s.at("id").get<std::string>(), std::string(key) == "s-rrt" ? "S-RRT" : "RRT"), {}, {}};
+        const Json& runs = s.at("series").at(key).at("runs");
         for (std::size_t i = 0; i < n; ++i) {
           se.x.push_back(static_cast<double>(i + 1));
-          se.y.push_back(runs[i]["found"].get<bool>() && runs[i][field].is_number()
-                             ? runs[i][field].get<double>()
+          se.y.push_back(runs[i].at("found").get<bool>() && runs[i].contains(field) && runs[i].at(field).is_number()
+                             ? runs[i].at(field).get<double>()
                              : std::numeric_limits<double>::quiet_NaN());
         }
         series.push_back(std::move(se));
       }
-    out.files.emplace_back(f.file, io::svg_line_chart(series, io::ChartOptions{f.title, "run", f.y}));
+    out.emplace_back(f.file, io::svg_line_chart(series, io::ChartOptions{f.title, "run", f.y, "",
+                                                                         "A line is broken at runs that found no path."}));
   }
-  out.doc["provenance"]["total_wall_s"] =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
   return out;
 }
 

@@ -307,7 +307,8 @@ TEST_CASE("svg: chart edge cases", "[svg]") {
   }
 }
 
-TEST_CASE("svg: map and chart side by side in one figure", "[svg]") {
+TEST_CASE("svg: map and chart stacked in one column-wide figure", "[svg]") {
+  // spec/figures.md figures.canvas: 504 units wide, the chart below the map.
   const Grid g = Grid::from_rows_top_first({".#", ".."});
   const auto els = parse_xml(io::svg_map_and_chart(
       g, Cell{0, 0}, Cell{1, 0}, {{"aco", {Cell{0, 0}, Cell{1, 0}}}}, "map",
@@ -318,6 +319,9 @@ TEST_CASE("svg: map and chart side by side in one figure", "[svg]") {
   CHECK(with_class(els, "polyline", "series").size() == 1);
   CHECK(with_class(els, "g", "legend").size() == 2);
   CHECK(with_class(els, "text", "title").size() == 2);
-  const double total_w = attr(els[0], "width");
-  CHECK(total_w > 640.0);  // the chart panel alone is 640 wide
+  CHECK(attr(els[0], "width") == Approx(504.0));
+  const auto map = with_class(els, "rect", "map")[0];
+  const auto area = with_class(els, "rect", "plot-area")[0];
+  CHECK(attr(area, "y") > attr(map, "y") + attr(map, "height"));
+  CHECK(attr(area, "y") + attr(area, "height") < attr(els[0], "height"));
 }

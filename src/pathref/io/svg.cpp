@@ -1,254 +1,189 @@
+// Grid maps and line charts on the plotting layer. Spec: spec/figures.md, spec/cli.md#svg-figures.
 #include "pathref/io/svg.hpp"
 
 #include <fmt/core.h>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <cstddef>
 #include <limits>
 
 #include "pathref/core/error.hpp"
+#include "pathref/io/plot.hpp"
 
 namespace pathref::io {
 
 namespace {
 
-/// A drawn panel before it is wrapped in an <svg> root: its size in px and its elements.
-struct Panel {
-  double width = 0.0;
-  double height = 0.0;
-  std::string body;
-};
+using plot::kFont;
+using plot::num;
 
-/// Line colours, in order of the paths/series (matplotlib's "tab10", readable in print).
-constexpr std::array<const char*, 8> kPalette = {"#1f77b4", "#d62728", "#2ca02c", "#ff7f0e",
-                                                 "#9467bd", "#8c564b", "#e377c2", "#17becf"};
+/// The longest side of a map is drawn at most this many units per cell.
+constexpr double kMaxCell = 48.0;
 
-/// The colour of the i-th path or series.
-const char* colour(std::size_t i) { return kPalette[i % kPalette.size()]; }
-
-/// A coordinate in px with two decimals: deterministic, short, and exact enough for drawing.
-std::string num(double v) { return fmt::format("{:.2f}", v); }
-
-/// Wraps a panel in the SVG root element.
-std::string wrap(const Panel& p) {
-  return fmt::format(
-      "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"{0}\" height=\"{1}\" "
-      "viewBox=\"0 0 {0} {1}\" font-family=\"DejaVu Sans, Arial, sans-serif\">\n"
-      "<rect class=\"background\" x=\"0\" y=\"0\" width=\"{0}\" height=\"{1}\" fill=\"white\"/>\n"
-      "{2}</svg>\n",
-      num(p.width), num(p.height), p.body);
+/// figures.map-labels: the smallest k in 1, 2, 5, 10, 20, 50, ... such that labels every k cells
+/// (each `label_w` wide along the axis) leave a gap of at least 4 units.
+std::int64_t label_every(double cell, double label_w) {
+  for (std::int64_t k = 1;; k *= 10)
+    for (const std::int64_t m : {std::int64_t{1}, std::int64_t{2}, std::int64_t{5}})
+      if (static_cast<double>(k * m) * cell >= label_w + 4.0) return k * m;
 }
 
-/// One legend entry: a short line (or marker) in `stroke` and the label text, at row `row`.
-std::string legend_line(double x, double y, const std::string& stroke, const std::string& label) {
-  return fmt::format(
-      "<line x1=\"{}\" y1=\"{}\" x2=\"{}\" y2=\"{}\" stroke=\"{}\" stroke-width=\"3\"/>"
-      "<text x=\"{}\" y=\"{}\" font-size=\"13\">{}</text>\n",
-      num(x), num(y), num(x + 24.0), num(y), stroke, num(x + 30.0), num(y + 4.5),
-      xml_escape(label));
-}
-
-// ---- map ------------------------------------------------------------------------------------
-
-constexpr double kMapMargin = 30.0;    // left/right/bottom margin around the grid
-constexpr double kMapTitleH = 40.0;    // space above the grid for the title
-constexpr double kMapLegendMinW = 150.0;  // space right of the grid for the legend, at least
-constexpr double kCharW = 7.2;            // generous width of one 13 px legend character
-constexpr double kMapTarget = 560.0;   // the longer grid side is drawn about this long
-
-/// Side of one cell in px: the longer grid side spans kMapTarget px, at most 48 px per cell.
-double cell_px(const grid::Grid& g) {
-  const double longest = static_cast<double>(std::max(g.width(), g.height()));
-  return std::min(48.0, kMapTarget / longest);
-}
-
-/// Top-left corner of cell c in px: (0, 0) is the lower-left cell, row H-1 is drawn at the top.
-std::pair<double, double> cell_corner(const grid::Grid& g, grid::Cell c, double s) {
-  return {kMapMargin + static_cast<double>(c.x) * s,
-          kMapTitleH + static_cast<double>(g.height() - 1 - c.y) * s};
-}
-
-/// Centre of cell c in px (paths are drawn through cell centres, as in Shi 2022 Fig. 8/11).
-std::pair<double, double> cell_centre_px(const grid::Grid& g, grid::Cell c, double s) {
-  const auto [x, y] = cell_corner(g, c, s);
-  return {x + s / 2.0, y + s / 2.0};
-}
-
-/// The start or goal marker: a filled circle in the cell with its letter on top.
-std::string endpoint_marker(const grid::Grid& g, grid::Cell c, double s, const char* cls,
-                            const char* fill, const char* letter) {
-  const auto [cx, cy] = cell_centre_px(g, c, s);
-  const double r = std::max(2.0, s * 0.38);
-  return fmt::format(
-      "<g class=\"{}\"><circle cx=\"{}\" cy=\"{}\" r=\"{}\" fill=\"{}\" stroke=\"black\" "
-      "stroke-width=\"1\"/><text x=\"{}\" y=\"{}\" font-size=\"{}\" font-weight=\"bold\" "
-      "text-anchor=\"middle\" fill=\"white\">{}</text></g>\n",
-      cls, num(cx), num(cy), num(r), fill, num(cx), num(cy + r * 0.45), num(std::max(6.0, r * 1.2)),
-      letter);
-}
-
-Panel map_panel(const grid::Grid& g, std::optional<grid::Cell> start,
-                std::optional<grid::Cell> goal, const std::vector<PathLayer>& paths,
-                const std::string& title) {
+/// Draws the map panel into `fig` at fig.y(): the grid, obstacles, grid lines, cell labels, paths
+/// and endpoints; then the legend.
+void map_panel(plot::Figure& fig, const grid::Grid& g, std::optional<grid::Cell> start,
+               std::optional<grid::Cell> goal, const std::vector<PathLayer>& paths, const std::string& title) {
   require(!start || g.in_bounds(*start), "svg_map: start outside the grid");
   require(!goal || g.in_bounds(*goal), "svg_map: goal outside the grid");
   for (const auto& layer : paths) {
     for (const auto& c : layer.path)
       require(g.in_bounds(c), "svg_map: path cell outside the grid in '" + layer.label + "'");
     for (const auto& q : layer.points)
-      require(std::isfinite(q.x) && std::isfinite(q.y),
-              "svg_map: non-finite point in '" + layer.label + "'");
+      require(std::isfinite(q.x) && std::isfinite(q.y), "svg_map: non-finite point in '" + layer.label + "'");
   }
-
-  const double s = cell_px(g);
-  const double gw = static_cast<double>(g.width()) * s;
-  const double gh = static_cast<double>(g.height()) * s;
-  std::size_t longest = 8;  // "obstacle"
-  for (const auto& layer : paths)  // the legend text, " (no path)" appended for an empty path
-    longest = std::max(longest, layer.label.size() + (layer.path.empty() && layer.points.empty() ? 10 : 0));
-  Panel p;
-  p.width = kMapMargin + gw + kMapMargin + std::max(kMapLegendMinW, 40.0 + kCharW * static_cast<double>(longest));
-  p.height = std::max(kMapTitleH + gh + kMapMargin, kMapTitleH + 30.0 + 22.0 * static_cast<double>(paths.size() + 3));
-  std::string& b = p.body;
-  b += fmt::format("<text class=\"title\" x=\"{}\" y=\"26\" font-size=\"16\" text-anchor=\"middle\">{}</text>\n",
-                   num(kMapMargin + gw / 2.0), xml_escape(title));
+  fig.title(title);
+  const bool small = g.width() <= 100 && g.height() <= 100;
+  const double label_w = small ? plot::text_width(std::to_string(std::max(g.width(), g.height()) - 1)) : 0.0;
+  const double left = small ? label_w + 6.0 : 0.0;
+  const double bottom = small ? kFont + 6.0 : 0.0;
+  const double avail = fig.inner_width() - left;
+  const plot::Frame f = plot::fit_frame(0.0, 0.0, static_cast<double>(g.width()), static_cast<double>(g.height()),
+                                        fig.inner_left() + left, fig.y(), avail, avail, kMaxCell);
+  const double s = f.scale;
+  const auto corner_x = [&](std::int64_t x) { return f.X(static_cast<double>(x)); };
+  const auto corner_y = [&](std::int64_t y) { return f.Y(static_cast<double>(y) + 1.0); };
+  const auto centre = [&](grid::Cell c) {
+    return std::pair{f.X(static_cast<double>(c.x) + 0.5), f.Y(static_cast<double>(c.y) + 0.5)};
+  };
+  std::string b = "<g class=\"panel\">\n";
   b += fmt::format("<rect class=\"map\" x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"white\" "
                    "stroke=\"black\" stroke-width=\"1\"/>\n",
-                   num(kMapMargin), num(kMapTitleH), num(gw), num(gh));
-  // Obstacles: one rect per blocked cell, so a reader (or a test) can count them.
-  for (std::int64_t y = g.height() - 1; y >= 0; --y)
-    for (std::int64_t x = 0; x < g.width(); ++x)
-      if (g.blocked(grid::Cell{x, y})) {
-        const auto [px, py] = cell_corner(g, grid::Cell{x, y}, s);
-        b += fmt::format("<rect class=\"obstacle\" x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"black\"/>\n",
-                         num(px), num(py), num(s), num(s));
-      }
-  if (g.width() <= 100 && g.height() <= 100) {
+                   num(f.left), num(f.top), num(f.width()), num(f.height()));
+  // Obstacles: one rect per blocked cell (top row first), so a reader (or a test) can count them.
+  b += plot::obstacle_cells(g, f);
+  if (small) {
     std::string d;
     for (std::int64_t x = 1; x < g.width(); ++x)
-      d += fmt::format("M{} {}V{}", num(kMapMargin + static_cast<double>(x) * s), num(kMapTitleH),
-                       num(kMapTitleH + gh));
+      d += fmt::format("M{} {}V{}", num(corner_x(x)), num(f.top), num(f.top + f.height()));
     for (std::int64_t y = 1; y < g.height(); ++y)
-      d += fmt::format("M{} {}H{}", num(kMapMargin), num(kMapTitleH + static_cast<double>(y) * s),
-                       num(kMapMargin + gw));
+      d += fmt::format("M{} {}H{}", num(f.left), num(corner_y(y - 1)), num(f.left + f.width()));
     if (!d.empty())
       b += fmt::format("<path class=\"gridlines\" d=\"{}\" stroke=\"#999999\" stroke-width=\"0.5\" fill=\"none\"/>\n", d);
-  }
-  if (g.width() <= 100 && g.height() <= 100) {
-    // Cell coordinates along the bottom (x) and the left (y): every cell up to 20, else every 5th.
-    const auto every = [](std::int64_t n) { return n <= 20 ? std::int64_t{1} : std::int64_t{5}; };
-    b += "<g class=\"axis-labels\" font-size=\"10\" fill=\"#555555\">\n";
-    for (std::int64_t x = 0; x < g.width(); x += every(g.width()))
-      b += fmt::format("<text x=\"{}\" y=\"{}\" text-anchor=\"middle\">{}</text>\n",
-                       num(kMapMargin + (static_cast<double>(x) + 0.5) * s), num(kMapTitleH + gh + 13.0), x);
-    for (std::int64_t y = 0; y < g.height(); y += every(g.height()))
-      b += fmt::format("<text x=\"{}\" y=\"{}\" text-anchor=\"end\">{}</text>\n", num(kMapMargin - 4.0),
-                       num(kMapTitleH + (static_cast<double>(g.height() - 1 - y) + 0.5) * s + 3.5), y);
+    // Cell coordinates along the bottom (x) and the left (y), every k-th cell.
+    const std::int64_t kx = label_every(s, label_w), ky = label_every(s, kFont);
+    b += "<g class=\"axis-labels\" fill=\"#444444\">\n";
+    for (std::int64_t x = 0; x < g.width(); x += kx)
+      b += plot::text(f.X(static_cast<double>(x) + 0.5), f.top + f.height() + kFont + 2.0, std::to_string(x), kFont,
+                      "middle");
+    for (std::int64_t y = 0; y < g.height(); y += ky)
+      b += plot::text(f.left - 4.0, f.Y(static_cast<double>(y) + 0.5) + 0.36 * kFont, std::to_string(y), kFont, "end");
     b += "</g>\n";
   }
-  const double stroke_w = std::clamp(s / 8.0, 1.0, 4.0);
+  const double stroke_w = std::clamp(s / 8.0, 1.5, 4.0);
+  std::vector<plot::LegendEntry> legend;
   for (std::size_t i = 0; i < paths.size(); ++i) {
-    if (paths[i].path.empty() && paths[i].points.empty()) continue;
+    const bool empty = paths[i].path.empty() && paths[i].points.empty();
+    const std::string dash = paths[i].dashed ? "6 4" : plot::dash(i);
+    legend.push_back({empty ? paths[i].label + " (no path)" : paths[i].label, plot::Swatch::line, plot::colour(i),
+                      dash, empty});
+    if (empty) continue;
     std::vector<std::pair<double, double>> vertices;
-    for (const auto& c : paths[i].path) vertices.push_back(cell_centre_px(g, c, s));
-    for (const auto& q : paths[i].points)  // map point -> px: y up, clamped to the drawing
-      vertices.emplace_back(kMapMargin + std::clamp(q.x, -1.0, static_cast<double>(g.width()) + 1.0) * s,
-                            kMapTitleH + (static_cast<double>(g.height()) -
-                                          std::clamp(q.y, -1.0, static_cast<double>(g.height()) + 1.0)) * s);
-    std::string pts;
-    for (const auto& [cx, cy] : vertices) {
-      if (!pts.empty()) pts += ' ';
-      pts += fmt::format("{},{}", num(cx), num(cy));
-    }
+    for (const auto& c : paths[i].path) vertices.push_back(centre(c));
+    for (const auto& q : paths[i].points)  // map point -> canvas, clamped to the drawing
+      vertices.emplace_back(f.X(std::clamp(q.x, 0.0, static_cast<double>(g.width()))),
+                            f.Y(std::clamp(q.y, 0.0, static_cast<double>(g.height()))));
     const double w = paths[i].markers ? stroke_w * 0.6 : stroke_w;
-    b += fmt::format("<polyline class=\"path\" data-label=\"{}\" points=\"{}\" fill=\"none\" stroke=\"{}\" "
-                     "stroke-width=\"{}\" stroke-linejoin=\"round\" stroke-linecap=\"round\"{}/>\n",
-                     xml_escape(paths[i].label), pts, colour(i), num(w),
-                     paths[i].dashed ? fmt::format(" stroke-dasharray=\"{} {}\"", num(2.5 * w), num(2.0 * w)) : "");
+    b += plot::polyline(vertices, "path", plot::colour(i), w, dash,
+                        fmt::format(" data-label=\"{}\"", plot::escape(paths[i].label)));
     if (paths[i].markers)
       for (const auto& [cx, cy] : vertices)
         b += fmt::format("<circle class=\"marker\" cx=\"{}\" cy=\"{}\" r=\"{}\" fill=\"{}\" stroke=\"black\" "
-                         "stroke-width=\"0.5\"/>\n", num(cx), num(cy), num(std::max(2.0, s * 0.16)), colour(i));
+                         "stroke-width=\"0.5\"/>\n",
+                         num(cx), num(cy), num(std::max(2.0, s * 0.16)), plot::colour(i));
   }
-  if (start) b += endpoint_marker(g, *start, s, "start", "#2ca02c", "S");
-  if (goal) b += endpoint_marker(g, *goal, s, "goal", "#d62728", "T");
-
-  const double lx = kMapMargin + gw + kMapMargin;
-  double ly = kMapTitleH + 12.0;
-  b += "<g class=\"legend\">\n";
-  for (std::size_t i = 0; i < paths.size(); ++i, ly += 22.0)
-    b += legend_line(lx, ly, colour(i),
-                     paths[i].path.empty() && paths[i].points.empty() ? paths[i].label + " (no path)"
-                                                                     : paths[i].label);
-  b += fmt::format("<circle cx=\"{}\" cy=\"{}\" r=\"7\" fill=\"#2ca02c\" stroke=\"black\"/>"
-                   "<text x=\"{}\" y=\"{}\" font-size=\"13\">start S</text>\n",
-                   num(lx + 12.0), num(ly), num(lx + 30.0), num(ly + 4.5));
-  ly += 22.0;
-  b += fmt::format("<circle cx=\"{}\" cy=\"{}\" r=\"7\" fill=\"#d62728\" stroke=\"black\"/>"
-                   "<text x=\"{}\" y=\"{}\" font-size=\"13\">goal T</text>\n",
-                   num(lx + 12.0), num(ly), num(lx + 30.0), num(ly + 4.5));
-  ly += 22.0;
-  b += fmt::format("<rect x=\"{}\" y=\"{}\" width=\"14\" height=\"14\" fill=\"black\"/>"
-                   "<text x=\"{}\" y=\"{}\" font-size=\"13\">obstacle</text>\n",
-                   num(lx + 5.0), num(ly - 7.0), num(lx + 30.0), num(ly + 4.5));
+  // Start and goal: a filled circle in the cell, its letter on top when it is legible (≥ kFont).
+  const auto endpoint = [&](grid::Cell c, const char* cls, const char* fill, const char* letter) {
+    const auto [cx, cy] = centre(c);
+    const double r = std::max(3.0, s * 0.38);
+    std::string m = fmt::format("<g class=\"{}\"><circle cx=\"{}\" cy=\"{}\" r=\"{}\" fill=\"{}\" stroke=\"black\" "
+                                "stroke-width=\"1\"/>",
+                                cls, num(cx), num(cy), num(r), fill);
+    if (r * 1.2 >= kFont)
+      m += fmt::format("<text x=\"{}\" y=\"{}\" font-size=\"{}\" font-weight=\"bold\" text-anchor=\"middle\" "
+                       "fill=\"white\">{}</text>",
+                       num(cx), num(cy + r * 0.45), num(r * 1.2), letter);
+    return m + "</g>\n";
+  };
+  if (start) b += endpoint(*start, "start", plot::kGreen, "S");
+  if (goal) b += endpoint(*goal, "goal", plot::kVermillion, "T");
   b += "</g>\n";
-  return p;
+  fig.block(b, f.height() + bottom + 4.0);
+  legend.push_back({"start S", plot::Swatch::dot, plot::kGreen});
+  legend.push_back({"goal T", plot::Swatch::dot, plot::kVermillion});
+  legend.push_back({"obstacle", plot::Swatch::square, "black"});
+  fig.legend(legend);
 }
 
-// ---- chart ----------------------------------------------------------------------------------
+/// Whether point i of a series is drawn (both coordinates finite, and positive on a log axis).
+bool drawable(const Series& s, std::size_t i, bool log) {
+  return std::isfinite(s.x[i]) && std::isfinite(s.y[i]) && (!log || s.y[i] > 0.0);
+}
 
-constexpr double kChartW = 640.0;
-constexpr double kChartH = 420.0;
-constexpr double kPlotLeft = 75.0;
-constexpr double kPlotRight = 20.0;
-constexpr double kPlotTop = 45.0;
-constexpr double kPlotBottom = 55.0;
-
-/// Tick positions for [lo, hi]: a "nice" step (1, 2 or 5 times a power of ten) giving about five
-/// intervals, the range widened outwards to whole steps. Returns {first, step, count}.
-struct Ticks {
-  double first;
-  double step;
-  int count;
-  int decimals;  ///< decimals needed to print the step exactly
+/// The plot area of a chart in `fig` below its title: left padding from the y label line and the
+/// widest y tick label, right padding `right`, height 0.62 × width (figures.chart).
+struct Area {
+  double x0, top, pw, ph;
+  /// Baseline of the x axis label (below the tick labels).
+  [[nodiscard]] double x_label_y() const { return top + ph + 8.0 + kFont + plot::kLineEm * kFont; }
 };
 
-Ticks nice_ticks(double lo, double hi) {
-  if (!(hi > lo)) {  // a flat line: widen symmetrically so it sits mid-height
-    const double pad = lo == 0.0 ? 1.0 : std::abs(lo) * 0.1;
-    lo -= pad;
-    hi += pad;
-  }
-  const double raw = (hi - lo) / 5.0;
-  const double mag = std::pow(10.0, std::floor(std::log10(raw)));
-  const double norm = raw / mag;
-  const double step = (norm <= 1.0 ? 1.0 : norm <= 2.0 ? 2.0 : norm <= 5.0 ? 5.0 : 10.0) * mag;
-  const double first = std::floor(lo / step) * step;
-  const double last = std::ceil(hi / step) * step;
-  const int count = static_cast<int>(std::lround((last - first) / step)) + 1;
-  const int decimals = std::max(0, -static_cast<int>(std::floor(std::log10(step) + 1e-9)));
-  return {first, step, count, decimals};
+Area plot_area(const plot::Figure& fig, const plot::Scale& ys, double right) {
+  double ytick_w = 0.0;
+  for (const double v : ys.ticks) ytick_w = std::max(ytick_w, plot::text_width(ys.label(v)));
+  const double left = plot::kLineEm * kFont + ytick_w + 10.0;
+  const double pw = fig.inner_width() - left - right;
+  return {fig.inner_left() + left, fig.y() + kFont / 2.0, pw, 0.62 * pw};
 }
 
-/// Whether point i of a series is drawn (both coordinates finite).
-bool drawable(const Series& s, std::size_t i) { return std::isfinite(s.x[i]) && std::isfinite(s.y[i]); }
+/// The frame of area `a`, the y ticks with grid lines and their labels, and the rotated y label.
+std::string y_axis(const plot::Figure& fig, const Area& a, const plot::Scale& ys, const std::string& label) {
+  std::string b = fmt::format("<rect class=\"plot-area\" x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"none\" "
+                              "stroke=\"black\" stroke-width=\"1\"/>\n",
+                              num(a.x0), num(a.top), num(a.pw), num(a.ph));
+  b += "<g class=\"yticks\">\n";
+  for (const double v : ys.ticks) {
+    const double y = ys.map(v, a.top + a.ph, a.top);
+    b += fmt::format("<line x1=\"{0}\" y1=\"{1}\" x2=\"{2}\" y2=\"{1}\" stroke=\"black\"/>"
+                     "<line x1=\"{2}\" y1=\"{1}\" x2=\"{3}\" y2=\"{1}\" stroke=\"#dddddd\"/>",
+                     num(a.x0 - 5.0), num(y), num(a.x0), num(a.x0 + a.pw)) +
+         plot::text(a.x0 - 8.0, y + 0.36 * kFont, ys.label(v), kFont, "end");
+  }
+  b += "</g>\n";
+  const double ly = a.top + a.ph / 2.0, lx = fig.inner_left() + kFont;
+  b += fmt::format("<text class=\"y-label\" x=\"{0}\" y=\"{1}\" font-size=\"{2}\" text-anchor=\"middle\" "
+                   "transform=\"rotate(-90 {0} {1})\">{3}</text>\n",
+                   num(lx), num(ly), kFont, plot::escape(label));
+  return b;
+}
 
-Panel chart_panel(const std::vector<Series>& series, const ChartOptions& opt) {
-  double xmin = std::numeric_limits<double>::infinity();
-  double xmax = -xmin;
-  double ymin = xmin;
-  double ymax = -xmin;
+void chart_panel(plot::Figure& fig, const std::vector<Series>& series, const ChartOptions& opt) {
+  double xmin = std::numeric_limits<double>::infinity(), xmax = -xmin, ymin = xmin, ymax = -xmin;
+  bool gaps = false;
   for (const auto& s : series) {
     require(s.x.size() == s.y.size(), "svg_line_chart: series '" + s.label + "' has x and y of different lengths");
-    for (std::size_t i = 0; i < s.x.size(); ++i)
-      if (drawable(s, i)) {
-        xmin = std::min(xmin, s.x[i]);
-        xmax = std::max(xmax, s.x[i]);
-        ymin = std::min(ymin, s.y[i]);
-        ymax = std::max(ymax, s.y[i]);
+    bool seen = false, broken = false;
+    for (std::size_t i = 0; i < s.x.size(); ++i) {
+      if (!drawable(s, i, false)) {
+        broken = seen;
+        continue;
       }
+      if (broken) gaps = true;
+      seen = true;
+      xmin = std::min(xmin, s.x[i]);
+      xmax = std::max(xmax, s.x[i]);
+      ymin = std::min(ymin, s.y[i]);
+      ymax = std::max(ymax, s.y[i]);
+    }
   }
   if (!std::isfinite(xmin)) {  // nothing to draw: axes over [0, 1] x [0, 1]
     xmin = 0.0;
@@ -256,134 +191,144 @@ Panel chart_panel(const std::vector<Series>& series, const ChartOptions& opt) {
     ymin = 0.0;
     ymax = 1.0;
   }
-  const Ticks xt = nice_ticks(xmin, xmax);
-  const Ticks yt = nice_ticks(ymin, ymax);
-  const double x0 = xt.first;
-  const double x1 = xt.first + xt.step * (xt.count - 1);
-  const double y0 = yt.first;
-  const double y1 = yt.first + yt.step * (yt.count - 1);
-  const double pw = kChartW - kPlotLeft - kPlotRight;
-  const double ph = kChartH - kPlotTop - kPlotBottom;
-  auto px = [&](double v) { return kPlotLeft + (v - x0) / (x1 - x0) * pw; };
-  auto py = [&](double v) { return kPlotTop + (y1 - v) / (y1 - y0) * ph; };
-
-  Panel p{kChartW, kChartH, {}};
-  std::string& b = p.body;
-  b += fmt::format("<text class=\"title\" x=\"{}\" y=\"26\" font-size=\"16\" text-anchor=\"middle\">{}</text>\n",
-                   num(kPlotLeft + pw / 2.0), xml_escape(opt.title));
-  b += fmt::format("<rect class=\"plot-area\" x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"none\" "
-                   "stroke=\"black\" stroke-width=\"1\"/>\n",
-                   num(kPlotLeft), num(kPlotTop), num(pw), num(ph));
-  b += "<g class=\"xticks\" font-size=\"12\" text-anchor=\"middle\">\n";
-  for (int i = 0; i < xt.count; ++i) {
-    const double v = xt.first + xt.step * i;
-    b += fmt::format("<line x1=\"{0}\" y1=\"{1}\" x2=\"{0}\" y2=\"{2}\" stroke=\"black\"/>"
-                     "<text x=\"{0}\" y=\"{3}\">{4:.{5}f}</text>\n",
-                     num(px(v)), num(kPlotTop + ph), num(kPlotTop + ph + 5.0), num(kPlotTop + ph + 19.0),
-                     v, xt.decimals);
-  }
-  b += "</g>\n<g class=\"yticks\" font-size=\"12\" text-anchor=\"end\">\n";
-  for (int i = 0; i < yt.count; ++i) {
-    const double v = yt.first + yt.step * i;
-    b += fmt::format("<line x1=\"{0}\" y1=\"{1}\" x2=\"{2}\" y2=\"{1}\" stroke=\"black\"/>"
-                     "<line x1=\"{2}\" y1=\"{1}\" x2=\"{3}\" y2=\"{1}\" stroke=\"#dddddd\"/>"
-                     "<text x=\"{4}\" y=\"{5}\">{6:.{7}f}</text>\n",
-                     num(kPlotLeft - 5.0), num(py(v)), num(kPlotLeft), num(kPlotLeft + pw),
-                     num(kPlotLeft - 8.0), num(py(v) + 4.0), v, yt.decimals);
-  }
+  const bool log = opt.y_scale == YScale::log ? ymin > 0.0
+                                              : opt.y_scale == YScale::automatic && plot::wants_log(ymin, ymax);
+  const plot::Scale xs = plot::linear_scale(xmin, xmax, false);
+  const plot::Scale ys = log ? plot::log_scale(ymin, ymax) : plot::linear_scale(ymin, ymax);
+  fig.title(opt.title);
+  const Area a = plot_area(fig, ys, plot::text_width(xs.label(xs.ticks.back())) / 2.0 + 2.0);
+  const double x0 = a.x0, pw = a.pw, top = a.top, ph = a.ph;
+  const auto px = [&](double v) { return xs.map(v, x0, x0 + pw); };
+  const auto py = [&](double v) { return ys.map(v, top + ph, top); };
+  std::string b = "<g class=\"panel\">\n" + y_axis(fig, a, ys, log ? opt.y_label + " (log scale)" : opt.y_label);
+  b += "<g class=\"xticks\">\n";
+  for (const double v : xs.ticks)
+    b += fmt::format("<line x1=\"{0}\" y1=\"{1}\" x2=\"{0}\" y2=\"{2}\" stroke=\"black\"/>", num(px(v)),
+                     num(top + ph), num(top + ph + 5.0)) +
+         plot::text(px(v), top + ph + 6.0 + kFont, xs.label(v), kFont, "middle");
   b += "</g>\n";
-  b += fmt::format("<text class=\"x-label\" x=\"{}\" y=\"{}\" font-size=\"13\" text-anchor=\"middle\">{}</text>\n",
-                   num(kPlotLeft + pw / 2.0), num(kChartH - 12.0), xml_escape(opt.x_label));
-  b += fmt::format("<text class=\"y-label\" x=\"{0}\" y=\"{1}\" font-size=\"13\" text-anchor=\"middle\" "
-                   "transform=\"rotate(-90 {0} {1})\">{2}</text>\n",
-                   num(18.0), num(kPlotTop + ph / 2.0), xml_escape(opt.y_label));
-
+  const double xlabel_y = a.x_label_y();
+  b += plot::text(x0 + pw / 2.0, xlabel_y, opt.x_label, kFont, "middle", "x-label");
+  std::vector<plot::LegendEntry> legend;
   for (std::size_t k = 0; k < series.size(); ++k) {
     const Series& s = series[k];
-    std::string pts;
-    std::size_t run = 0;
+    std::vector<std::pair<double, double>> run;
+    bool any = false;
     auto flush = [&] {
-      if (run == 1) {  // a lone point would be invisible as a polyline: mark it
-        const auto comma = pts.find(',');
-        b += fmt::format("<circle class=\"point\" cx=\"{}\" cy=\"{}\" r=\"3\" fill=\"{}\"/>\n",
-                         pts.substr(0, comma), pts.substr(comma + 1), colour(k));
-      }
-      if (run >= 1)
-        b += fmt::format("<polyline class=\"series\" data-label=\"{}\" points=\"{}\" fill=\"none\" "
-                         "stroke=\"{}\" stroke-width=\"2\"/>\n",
-                         xml_escape(s.label), pts, colour(k));
-      pts.clear();
-      run = 0;
+      if (run.size() == 1)  // a lone point would be invisible as a polyline: mark it
+        b += fmt::format("<circle class=\"point\" cx=\"{}\" cy=\"{}\" r=\"3.5\" fill=\"{}\"/>\n", num(run[0].first),
+                         num(run[0].second), plot::colour(k));
+      if (!run.empty())
+        b += plot::polyline(run, "series", plot::colour(k), 2.0, plot::dash(k),
+                            fmt::format(" data-label=\"{}\"", plot::escape(s.label)));
+      run.clear();
     };
     for (std::size_t i = 0; i < s.x.size(); ++i) {
-      if (!drawable(s, i)) {
+      if (!drawable(s, i, log)) {
         flush();
         continue;
       }
-      if (!pts.empty()) pts += ' ';
-      pts += fmt::format("{},{}", num(px(s.x[i])), num(py(s.y[i])));
-      ++run;
+      any = true;
+      run.emplace_back(px(s.x[i]), py(s.y[i]));
     }
     flush();
+    for (const double m : s.marks)
+      for (std::size_t i = 0; i < s.x.size(); ++i)
+        if (s.x[i] == m && drawable(s, i, log))
+          b += fmt::format("<circle class=\"mark\" cx=\"{}\" cy=\"{}\" r=\"5\" fill=\"none\" stroke=\"{}\" "
+                           "stroke-width=\"1.5\"/>\n",
+                           num(px(s.x[i])), num(py(s.y[i])), plot::colour(k));
+    legend.push_back({any ? s.label : s.label + " — " + (s.absent.empty() ? "no finite value" : s.absent),
+                      plot::Swatch::line, plot::colour(k), plot::dash(k), !any});
   }
+  b += "</g>\n";
+  fig.block(b, xlabel_y - fig.y() + 6.0);
+  fig.legend(legend);
+  if (gaps) fig.caption(opt.gap_note.empty() ? "A line is broken where its value is undefined." : opt.gap_note);
+  if (!opt.caption.empty()) fig.caption(opt.caption);
+}
 
-  // Legend in the upper right of the plot area, on a white box, as in Shi 2022 Fig. 9/12.
-  if (!series.empty()) {
-    std::size_t longest = 0;
-    for (const auto& s : series) longest = std::max(longest, s.label.size());
-    const double lw = 44.0 + kCharW * static_cast<double>(longest);
-    const double lh = 10.0 + 20.0 * static_cast<double>(series.size());
-    const double lx = kPlotLeft + pw - lw - 8.0;
-    const double ly = kPlotTop + 8.0;
-    b += fmt::format("<g class=\"legend\">\n<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"white\" "
-                     "fill-opacity=\"0.9\" stroke=\"#888888\"/>\n",
-                     num(lx), num(ly), num(lw), num(lh));
-    for (std::size_t k = 0; k < series.size(); ++k)
-      b += legend_line(lx + 8.0, ly + 15.0 + 20.0 * static_cast<double>(k), colour(k), series[k].label);
-    b += "</g>\n";
+void bar_panel(plot::Figure& fig, const BarChart& c) {
+  double lo = 0.0, hi = c.y_max;
+  if (!std::isfinite(hi)) {
+    hi = 0.0;
+    for (const auto& s : c.bars)
+      for (const double v : s.y)
+        if (std::isfinite(v)) hi = std::max(hi, v);
   }
-  return p;
+  plot::Scale ys = plot::linear_scale(lo, hi);
+  if (std::isfinite(c.y_max)) {  // a fixed range (e.g. 0-100 %): ticks every tenth
+    ys.lo = lo;
+    ys.hi = c.y_max;
+    ys.ticks.clear();
+    for (int t = 0; t <= 10; ++t) ys.ticks.push_back(c.y_max * t / 10.0);
+  }
+  fig.title(c.title);
+  fig.skip(kFont + 2.0);  // room for the values above the tallest bars
+  const Area a = plot_area(fig, ys, 2.0);
+  std::string b = "<g class=\"panel\">\n" + y_axis(fig, a, ys, c.y_label);
+  const double gw = a.pw / static_cast<double>(std::max<std::size_t>(1, c.groups.size()));
+  const double bw = 0.84 * gw / static_cast<double>(std::max<std::size_t>(1, c.bars.size()));
+  const auto py = [&](double v) { return ys.map(v, a.top + a.ph, a.top); };
+  std::vector<plot::LegendEntry> legend;
+  for (std::size_t k = 0; k < c.bars.size(); ++k) {
+    const char* fill = k == 0 ? plot::kGrey : plot::colour(k - 1);
+    legend.push_back({c.bars[k].label, plot::Swatch::square, fill});
+    for (std::size_t gi = 0; gi < c.groups.size() && gi < c.bars[k].y.size(); ++gi) {
+      const double v = c.bars[k].y[gi];
+      if (!std::isfinite(v)) continue;
+      const double x = a.x0 + gw * (static_cast<double>(gi) + 0.08) + bw * static_cast<double>(k);
+      b += fmt::format("<rect class=\"bar\" x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"{}\"/>\n", num(x + 1.0),
+                       num(py(v)), num(bw - 2.0), num(a.top + a.ph - py(v)), fill);
+      // the value above its bar, with fewer decimals when needed to fit its width; else none
+      for (int d = c.value_decimals; d >= 0; --d) {
+        const std::string label = fmt::format("{:.{}f}", v, d);
+        if (plot::text_width(label) > bw + 4.0) continue;
+        b += plot::text(x + bw / 2.0, py(v) - 3.0, label, kFont, "middle", "value");
+        break;
+      }
+    }
+  }
+  for (std::size_t gi = 0; gi < c.groups.size(); ++gi)
+    b += plot::text(a.x0 + gw * (static_cast<double>(gi) + 0.5), a.top + a.ph + 6.0 + kFont, c.groups[gi], kFont, "middle");
+  b += "</g>\n";
+  fig.block(b, a.top + a.ph + 12.0 + kFont - fig.y());
+  fig.legend(legend);
+  if (!c.caption.empty()) fig.caption(c.caption);
 }
 
 }  // namespace
 
-std::string xml_escape(std::string_view text) {
-  std::string out;
-  out.reserve(text.size());
-  for (const char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&apos;"; break;
-      default: out += c;
-    }
-  }
-  return out;
+std::string svg_bar_chart(const BarChart& c) {
+  plot::Figure fig;
+  bar_panel(fig, c);
+  return fig.svg();
 }
+
+std::string xml_escape(std::string_view text) { return plot::escape(text); }
 
 std::string svg_line_chart(const std::vector<Series>& series, const ChartOptions& opt) {
-  return wrap(chart_panel(series, opt));
+  plot::Figure fig;
+  chart_panel(fig, series, opt);
+  return fig.svg();
 }
 
-std::string svg_map(const grid::Grid& g, std::optional<grid::Cell> start,
-                    std::optional<grid::Cell> goal, const std::vector<PathLayer>& paths,
-                    const std::string& title) {
-  return wrap(map_panel(g, start, goal, paths, title));
+std::string svg_map(const grid::Grid& g, std::optional<grid::Cell> start, std::optional<grid::Cell> goal,
+                    const std::vector<PathLayer>& paths, const std::string& title) {
+  plot::Figure fig;
+  map_panel(fig, g, start, goal, paths, title);
+  return fig.svg();
 }
 
 std::string svg_map_and_chart(const grid::Grid& g, std::optional<grid::Cell> start,
                               std::optional<grid::Cell> goal, const std::vector<PathLayer>& paths,
                               const std::string& map_title, const std::vector<Series>& series,
                               const ChartOptions& chart) {
-  const Panel left = map_panel(g, start, goal, paths, map_title);
-  const Panel right = chart_panel(series, chart);
-  Panel both{left.width + right.width, std::max(left.height, right.height), {}};
-  both.body = "<g class=\"panel\">\n" + left.body + "</g>\n" +
-              fmt::format("<g class=\"panel\" transform=\"translate({} 0)\">\n", num(left.width)) +
-              right.body + "</g>\n";
-  return wrap(both);
+  plot::Figure fig;
+  map_panel(fig, g, start, goal, paths, map_title);
+  fig.skip(12.0);
+  chart_panel(fig, series, chart);
+  return fig.svg();
 }
 
 }  // namespace pathref::io

@@ -6,6 +6,7 @@
 /// Output is self-contained SVG 1.1 text (no scripts, no external fonts or images), deterministic
 /// for the same input (numbers printed with a fixed number of decimals).
 /// Spec: spec/cli.md#svg-figures
+#include <limits>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -18,22 +19,52 @@ namespace pathref::io {
 
 /// One line of a chart: points (x[i], y[i]). Pre: x.size() == y.size() (DomainError).
 /// Non-finite y values (e.g. "no solution yet" = +inf) are skipped: the line is broken there.
+/// `absent`: why the series may have no finite point (shown in the legend then, e.g. "no feasible
+/// run"; default "no finite value"). `marks`: x values marked on the line with a ring (e.g. the
+/// iteration where a run converged).
 struct Series {
   std::string label;
   std::vector<double> x;
   std::vector<double> y;
+  std::string absent = {};
+  std::vector<double> marks = {};
 };
 
+/// y axis: automatic (log when plot::wants_log), or forced.
+enum class YScale { automatic, linear, log };
+
+/// `caption`: a note printed under the legend. `gap_note`: what a break in a line means (printed
+/// when some series has one; default "a line is broken where its value is undefined").
 struct ChartOptions {
   std::string title;
   std::string x_label;
   std::string y_label;
+  std::string caption = {};
+  std::string gap_note = {};
+  YScale y_scale = YScale::automatic;
 };
 
-/// A line chart with axes, ticks, axis labels, title and a legend listing every series label.
-/// Each series is drawn as one <polyline> per unbroken run of finite points (class "series").
-/// An empty series list, or series without finite points, gives a chart with axes and legend only.
+/// A line chart (spec/figures.md): axes with nice ticks (log when one series dwarfs the rest,
+/// "(log scale)" added to the y label), axis labels, a left-aligned title and, below the data, a
+/// legend listing every series; a series without finite points is listed as absent with its
+/// reason. Each series is drawn as one <polyline class="series"> per unbroken run of finite points.
 [[nodiscard]] std::string svg_line_chart(const std::vector<Series>& series, const ChartOptions& opt);
+
+/// A grouped bar chart: one group per `groups` entry, one bar per series in `bars` (bars[k].y[g] is
+/// the value of series k in group g; x unused; the first series grey, the others in the palette),
+/// each value printed above its bar (with fewer decimals when needed to fit); y from 0 to `y_max` (ticks every tenth), or to
+/// the data's nice maximum when y_max is NaN. Title, axis, legend below and caption as
+/// svg_line_chart.
+struct BarChart {
+  std::string title;
+  std::string y_label;
+  std::vector<std::string> groups;
+  std::vector<Series> bars;
+  double y_max = std::numeric_limits<double>::quiet_NaN();
+  int value_decimals = 1;
+  std::string caption = {};
+};
+[[nodiscard]] std::string svg_bar_chart(const BarChart& chart);
 
 /// One path drawn on a map: a polyline through the centres of its cells, in the legend as `label`;
 /// or, when `points` is non-empty, a polyline through those map points (continuous paths such as
@@ -49,18 +80,20 @@ struct PathLayer {
 
 /// The grid map: a white <rect class="map"> for the whole grid, one black <rect class="obstacle">
 /// per blocked cell, grid lines (a single <path class="gridlines">, only when W and H <= 100),
-/// cell coordinate labels along the bottom and left edges (<g class="axis-labels">, same limit),
-/// (0,0) drawn at the LOWER left, the start ("S", green) and goal ("T", red) markers when given,
-/// each non-empty path as one <polyline class="path"> through cell centres, a legend
-/// (<g class="legend">) with one entry per path label plus "start"/"goal"/"obstacle", and the title.
+/// cell coordinate labels along the bottom and left edges (<g class="axis-labels">, same limit,
+/// every k-th cell so the labels do not touch), (0,0) drawn at the LOWER left, the start ("S",
+/// green) and goal ("T", vermillion) markers when given, each non-empty path as one
+/// <polyline class="path"> through cell centres (Okabe–Ito colour and dash pattern per path), the
+/// title above and a legend (<g class="legend">) below with one entry per path label plus
+/// "start"/"goal"/"obstacle".
 /// Pre: start/goal, when given, and every path cell are in bounds (DomainError).
 [[nodiscard]] std::string svg_map(const grid::Grid& g, std::optional<grid::Cell> start,
                                   std::optional<grid::Cell> goal,
                                   const std::vector<PathLayer>& paths, const std::string& title);
 
-/// Map (left) and convergence chart (right) side by side in one figure, as `pathref plan --svg`
+/// Map (top) and convergence chart (below) in one column-wide figure, as `pathref plan --svg`
 /// writes for iterative planners. Both panels have the same content as svg_map / svg_line_chart,
-/// each inside a translated <g class="panel">.
+/// each inside a <g class="panel">.
 [[nodiscard]] std::string svg_map_and_chart(const grid::Grid& g, std::optional<grid::Cell> start,
                                             std::optional<grid::Cell> goal,
                                             const std::vector<PathLayer>& paths,

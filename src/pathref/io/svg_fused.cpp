@@ -1,3 +1,4 @@
+// The fused-run figure (sensors2023 Fig. 9/13) on the plotting layer. Spec: spec/figures.md.
 #include "pathref/io/svg_fused.hpp"
 
 #include <fmt/core.h>
@@ -5,110 +6,113 @@
 #include <algorithm>
 #include <cmath>
 
-#include "pathref/io/svg.hpp"
+#include "pathref/io/plot.hpp"
 
 namespace pathref::io {
 
 std::string svg_fused(const dwa::FusedScenario& s, const dwa::FusedResult& r) {
   using dwa::Point;
-  double x0 = 0.0, y0 = 0.0;
-  auto x1 = static_cast<double>(s.grid.width());
-  auto y1 = static_cast<double>(s.grid.height());
-  auto grow = [&](Point p, double rad) {
-    if (!std::isfinite(p.x) || !std::isfinite(p.y)) return;
-    x0 = std::min(x0, p.x - rad);
-    y0 = std::min(y0, p.y - rad);
-    x1 = std::max(x1, p.x + rad);
-    y1 = std::max(y1, p.y + rad);
-  };
-  for (const auto& smp : r.samples) grow(Point{smp.pose.x, smp.pose.y}, s.dwa.radius);
+  using plot::num;
+  plot::Extent ext;
+  ext.add(0.0, 0.0);
+  ext.add(static_cast<double>(s.grid.width()), static_cast<double>(s.grid.height()));
+  for (const auto& smp : r.samples) ext.add(smp.pose.x, smp.pose.y, s.dwa.radius);
   for (const auto& at : r.tracks)
-    for (std::size_t i = 0; i < at.size() && i < s.moving.size(); ++i) grow(at[i], s.moving[i].r);
-  const double w = x1 - x0, h = y1 - y0;
-  const double scale = std::max(2.0, std::min(40.0, 800.0 / std::max(w, h)));
-  const double pad = 30.0;
-  auto X = [&](double x) { return pad + (x - x0) * scale; };
-  auto Y = [&](double y) { return pad + (y1 - y) * scale; };
-  std::string out = fmt::format(
-      "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"{:.0f}\" height=\"{:.0f}\">\n",
-      2.0 * pad + w * scale, 2.0 * pad + h * scale + 24.0);
-  out += fmt::format("<title>{}</title>\n", xml_escape("pathref simulate (sensors2023 fused A* + following DWA, Fig. 9/13)"));
-  out += fmt::format("<rect class=\"map\" x=\"{:.2f}\" y=\"{:.2f}\" width=\"{:.2f}\" height=\"{:.2f}\" fill=\"white\" stroke=\"black\"/>\n",
-                     X(0), Y(static_cast<double>(s.grid.height())), static_cast<double>(s.grid.width()) * scale,
-                     static_cast<double>(s.grid.height()) * scale);
-  for (std::int64_t i = 0; i < s.grid.cell_count(); ++i) {
-    const grid::Cell c = s.grid.cell(i);
-    if (!s.grid.blocked(c)) continue;
-    out += fmt::format("<rect class=\"obstacle\" x=\"{:.2f}\" y=\"{:.2f}\" width=\"{:.2f}\" height=\"{:.2f}\" fill=\"black\"/>\n",
-                       X(static_cast<double>(c.x)), Y(static_cast<double>(c.y) + 1.0), scale, scale);
-  }
+    for (std::size_t i = 0; i < at.size() && i < s.moving.size(); ++i) ext.add(at[i].x, at[i].y, s.moving[i].r);
+  plot::Figure fig;
+  fig.title("Fused A* + following DWA run (cf. sensors2023, Figs. 9 and 13)");
+  const plot::Frame f = plot::fit_frame(ext.x0, ext.y0, ext.x1, ext.y1, fig.inner_left(), fig.y() + 4.0,
+                                        fig.inner_width(), 1.2 * fig.inner_width(), 40.0);
+  const auto P = [&](Point p) { return std::pair{f.X(p.x), f.Y(p.y)}; };
+  const auto centre = [](grid::Cell c) { return Point{static_cast<double>(c.x) + 0.5, static_cast<double>(c.y) + 0.5}; };
+  std::string b = fmt::format("<title>{}</title>\n",
+                              plot::escape("pathref simulate (sensors2023 fused A* + following DWA, Fig. 9/13)"));
+  b += fmt::format("<rect class=\"map\" x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"white\" stroke=\"black\"/>\n",
+                   num(f.X(0.0)), num(f.Y(static_cast<double>(s.grid.height()))),
+                   num(static_cast<double>(s.grid.width()) * f.scale), num(static_cast<double>(s.grid.height()) * f.scale));
+  b += plot::obstacle_cells(s.grid, f);
+  plot::LabelPlacer labels(plot::Box{0.0, fig.y(), fig.width(), f.top + f.height() + 8.0});
+  std::string label_svg;
+  std::vector<plot::LegendEntry> legend;
   for (const dwa::Temporary& t : s.temporary) {
-    out += fmt::format("<rect class=\"temporary\" x=\"{:.2f}\" y=\"{:.2f}\" width=\"{:.2f}\" height=\"{:.2f}\" fill=\"#a0a0a0\"/>\n",
-                       X(static_cast<double>(t.cell.x)), Y(static_cast<double>(t.cell.y) + 1.0), scale, scale);
-    out += fmt::format("<text class=\"temporary-label\" x=\"{:.2f}\" y=\"{:.2f}\" font-size=\"9\">{:g}-{:g} s</text>\n",
-                       X(static_cast<double>(t.cell.x) + 1.0) + 2.0, Y(static_cast<double>(t.cell.y) + 0.5),
-                       t.appear, t.disappear);
+    const double x = f.X(static_cast<double>(t.cell.x)), y = f.Y(static_cast<double>(t.cell.y) + 1.0);
+    b += fmt::format("<rect class=\"temporary\" x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"#A0A0A0\"/>\n", num(x),
+                     num(y), num(f.scale), num(f.scale));
+    labels.reserve(plot::Box{x, y, x + f.scale, y + f.scale});
   }
-  auto polyline = [&](const char* cls, const char* colour, const char* extra, const std::vector<Point>& pts) {
-    if (pts.empty()) return;
-    out += fmt::format("<polyline class=\"{}\" fill=\"none\" stroke=\"{}\" stroke-width=\"2\"{} points=\"", cls, colour, extra);
-    for (std::size_t i = 0; i < pts.size(); ++i) out += fmt::format("{}{:.2f},{:.2f}", i == 0 ? "" : " ", X(pts[i].x), Y(pts[i].y));
-    out += "\"/>\n";
-  };
-  auto centre = [](grid::Cell c) { return Point{static_cast<double>(c.x) + 0.5, static_cast<double>(c.y) + 0.5}; };
-  std::vector<Point> gp;
-  for (const grid::Cell c : r.global_path) gp.push_back(centre(c));
-  polyline("global-path", "#3070ff", " stroke-dasharray=\"6,4\"", gp);
+  for (const dwa::Temporary& t : s.temporary)
+    label_svg += labels.place(f.X(static_cast<double>(t.cell.x) + 0.5), f.Y(static_cast<double>(t.cell.y) + 0.5),
+                              fmt::format("{:g}-{:g} s", t.appear, t.disappear), f.scale / 2.0 + 1.0,
+                              "temporary-label", "#505050");
+  if (!s.temporary.empty()) legend.push_back({"temporary obstacle (present s)", plot::Swatch::square, "#A0A0A0"});
+  std::vector<std::pair<double, double>> gp;
+  for (const grid::Cell c : r.global_path) gp.push_back(P(centre(c)));
+  if (!gp.empty()) {
+    b += plot::polyline(gp, "global-path", plot::kSky, 2.0, "6 4");
+    legend.push_back({"global path", plot::Swatch::line, plot::kSky, "6 4"});
+  } else {
+    legend.push_back({"global path — none found", plot::Swatch::line, plot::kSky, "6 4", true});
+  }
   for (const grid::Cell c : r.key_nodes) {
-    const Point p = centre(c);
-    out += fmt::format("<rect class=\"key-node\" x=\"{:.2f}\" y=\"{:.2f}\" width=\"6\" height=\"6\" fill=\"none\" stroke=\"#3070ff\"/>\n",
-                       X(p.x) - 3.0, Y(p.y) - 3.0);
+    const auto [x, y] = P(centre(c));
+    b += fmt::format("<rect class=\"key-node\" x=\"{}\" y=\"{}\" width=\"7\" height=\"7\" fill=\"none\" stroke=\"{}\" "
+                     "stroke-width=\"1.5\"/>\n",
+                     num(x - 3.5), num(y - 3.5), plot::kBlue);
   }
-  std::vector<Point> track;
-  for (const auto& smp : r.samples) track.push_back(Point{smp.pose.x, smp.pose.y});
-  polyline("trajectory", "#0030c0", "", track);
+  if (!r.key_nodes.empty()) legend.push_back({"key node", plot::Swatch::box, plot::kBlue});
+  std::vector<std::pair<double, double>> track;
+  for (const auto& smp : r.samples) track.push_back(P(Point{smp.pose.x, smp.pose.y}));
+  if (!track.empty()) b += plot::polyline(track, "trajectory", plot::kBlue, 2.5);
+  legend.push_back({"robot", plot::Swatch::line, plot::kBlue});
   for (std::size_t o = 0; o < s.moving.size(); ++o) {
-    std::vector<Point> tr;
+    std::vector<std::pair<double, double>> tr;
     for (const auto& at : r.tracks)
-      if (o < at.size()) tr.push_back(at[o]);
-    polyline("obstacle-track", "#e0a000", " stroke-dasharray=\"2,3\"", tr);
-    if (!tr.empty())
-      out += fmt::format("<circle class=\"obstacle-end\" cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"{:.2f}\" fill=\"#f0c000\" stroke=\"black\"/>\n",
-                         X(tr.back().x), Y(tr.back().y), s.moving[o].r * scale);
+      if (o < at.size()) tr.push_back(P(at[o]));
+    if (tr.empty()) continue;
+    b += plot::polyline(tr, "obstacle-track", "black", 1.5, "1 3");
+    b += fmt::format("<circle class=\"obstacle-end\" cx=\"{}\" cy=\"{}\" r=\"{}\" fill=\"{}\" stroke=\"black\"/>\n",
+                     num(tr.back().first), num(tr.back().second), num(s.moving[o].r * f.scale), plot::kYellow);
   }
-  // time marks every `mark` seconds (at most 20), on the robot and on every mover (same samples)
+  if (!s.moving.empty()) legend.push_back({"moving obstacle (end: yellow)", plot::Swatch::line, "black", "1 3"});
+  // time marks on the robot and on every mover (the same samples, so equal labels are simultaneous)
   const double end_t = r.samples.empty() ? 0.0 : r.samples.back().t;
-  double mark = 1.0;
-  for (const double m : {1.0, 2.0, 5.0, 10.0, 20.0, 50.0, 100.0, 200.0, 500.0, 1000.0, 2000.0, 5000.0, 10000.0, 20000.0, 50000.0, 100000.0}) {
-    mark = m;
-    if (end_t / m <= 20.0) break;
+  const double mark = plot::mark_step(end_t);
+  std::vector<double> times;
+  for (const auto& smp : r.samples) times.push_back(smp.t);
+  const auto marks = plot::mark_samples(times, mark);
+  std::vector<double> mark_times;
+  std::vector<std::pair<double, double>> robot;
+  for (const auto& [i, t] : marks) {
+    mark_times.push_back(t);
+    robot.push_back(P(Point{r.samples[i].pose.x, r.samples[i].pose.y}));
   }
-  std::int64_t next = 0;
-  for (std::size_t i = 0; i < r.samples.size(); ++i) {
-    if (r.samples[i].t + 1e-9 < static_cast<double>(next) * mark) continue;
-    const double label = static_cast<double>(next) * mark;
-    while (r.samples[i].t + 1e-9 >= static_cast<double>(next) * mark) ++next;
-    const Point p{r.samples[i].pose.x, r.samples[i].pose.y};
-    out += fmt::format("<circle class=\"time-mark\" cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"2\" fill=\"#0030c0\"/>\n", X(p.x), Y(p.y));
-    out += fmt::format("<text class=\"time-mark-label\" x=\"{:.2f}\" y=\"{:.2f}\" font-size=\"9\" fill=\"#0030c0\">{:g}</text>\n",
-                       X(p.x) + 3.0, Y(p.y) - 3.0, label);
-    if (i < r.tracks.size())
-      for (const Point& q : r.tracks[i]) {
-        out += fmt::format("<circle class=\"obstacle-time-mark\" cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"2\" fill=\"#b07000\"/>\n", X(q.x), Y(q.y));
-        out += fmt::format("<text class=\"obstacle-time-mark-label\" x=\"{:.2f}\" y=\"{:.2f}\" font-size=\"9\" fill=\"#b07000\">{:g}</text>\n",
-                           X(q.x) + 3.0, Y(q.y) + 9.0, label);
+  b += plot::time_marks(robot, mark_times, "time-mark", plot::kBlue, labels, label_svg);
+  for (std::size_t o = 0; o < s.moving.size(); ++o) {
+    std::vector<std::pair<double, double>> pts;
+    std::vector<double> ts;
+    for (const auto& [i, t] : marks)
+      if (i < r.tracks.size() && o < r.tracks[i].size()) {
+        pts.push_back(P(r.tracks[i][o]));
+        ts.push_back(t);
       }
+    b += plot::time_marks(pts, ts, "obstacle-time-mark", "black", labels, label_svg);
   }
-  const Point st = centre(s.start), go = centre(s.goal);
-  out += fmt::format("<polygon class=\"start\" points=\"{:.2f},{:.2f} {:.2f},{:.2f} {:.2f},{:.2f}\" fill=\"green\"/>\n", X(st.x),
-                     Y(st.y) - 6.0, X(st.x) - 5.0, Y(st.y) + 4.0, X(st.x) + 5.0, Y(st.y) + 4.0);
-  out += fmt::format("<circle class=\"goal\" cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"5\" fill=\"none\" stroke=\"red\" stroke-width=\"2\"/>\n",
-                     X(go.x), Y(go.y));
-  out += fmt::format("<text class=\"summary\" x=\"{:.2f}\" y=\"{:.2f}\" font-size=\"12\">{}: time {:.1f} s, length {:.2f} m, turns {}, min clearance {:.3f} m; marks every {:g} s</text>\n",
-                     pad, 2.0 * pad + h * scale + 12.0, dwa::to_string(r.outcome), r.time, r.length, r.turns,
-                     r.min_clearance, mark);
-  out += "</svg>\n";
-  return out;
+  const auto [sx, sy] = P(centre(s.start));
+  const auto [gx, gy] = P(centre(s.goal));
+  b += fmt::format("<polygon class=\"start\" points=\"{},{} {},{} {},{}\" fill=\"{}\"/>\n", num(sx), num(sy - 7.0),
+                   num(sx - 6.0), num(sy + 5.0), num(sx + 6.0), num(sy + 5.0), plot::kGreen);
+  b += fmt::format("<circle class=\"goal\" cx=\"{}\" cy=\"{}\" r=\"6\" fill=\"none\" stroke=\"{}\" stroke-width=\"2.5\"/>\n",
+                   num(gx), num(gy), plot::kVermillion);
+  fig.block(b + label_svg, f.height() + 8.0);
+  legend.push_back({"time mark (s)", plot::Swatch::dot, plot::kBlue});
+  legend.push_back({"start", plot::Swatch::triangle, plot::kGreen});
+  legend.push_back({"goal", plot::Swatch::ring, plot::kVermillion});
+  legend.push_back({"obstacle", plot::Swatch::square, "black"});
+  fig.legend(legend);
+  fig.caption(fmt::format("{}: time {:.1f} s, length {:.2f} m, turns {}, min clearance {:.3f} m; marks every {:g} s",
+                          dwa::to_string(r.outcome), r.time, r.length, r.turns, r.min_clearance, mark),
+              "summary");
+  return fig.svg();
 }
 
 }  // namespace pathref::io

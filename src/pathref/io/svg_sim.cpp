@@ -1,127 +1,145 @@
+// Han's simulation figure on the plotting layer. Spec: spec/han-sim.md#cli, spec/figures.md.
 #include "pathref/io/svg_sim.hpp"
 
 #include <fmt/core.h>
 
 #include <algorithm>
 
-#include "pathref/io/svg.hpp"
+#include "pathref/io/plot.hpp"
 
 namespace pathref::io {
 
 std::string svg_simulation(const sim::Scenario& s, const sim::SimResult& r) {
-  const auto w = static_cast<double>(s.grid.width());
-  const auto h = static_cast<double>(s.grid.height());
-  const double scale = std::max(4.0, std::min(40.0, 800.0 / std::max(w, h)));
-  const double pad = 30.0;
-  auto X = [&](double x) { return pad + x * scale; };
-  auto Y = [&](double y) { return pad + (h - y) * scale; };
-  std::string out = fmt::format(
-      "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"{:.0f}\" height=\"{:.0f}\">\n",
-      2.0 * pad + w * scale, 2.0 * pad + h * scale + 20.0);
-  out += fmt::format("<title>{}</title>\n", xml_escape("pathref simulate (Han IACO-A*, Fig. 8)"));
-  out += fmt::format("<rect class=\"map\" x=\"{:.2f}\" y=\"{:.2f}\" width=\"{:.2f}\" height=\"{:.2f}\" fill=\"white\" stroke=\"black\"/>\n",
-                     X(0), Y(h), w * scale, h * scale);
-  for (std::int64_t i = 0; i < s.grid.cell_count(); ++i) {
-    const grid::Cell c = s.grid.cell(i);
-    if (!s.grid.blocked(c)) continue;
-    out += fmt::format("<rect class=\"obstacle\" x=\"{:.2f}\" y=\"{:.2f}\" width=\"{:.2f}\" height=\"{:.2f}\" fill=\"#3060c0\"/>\n",
-                       X(static_cast<double>(c.x)), Y(static_cast<double>(c.y) + 1.0), scale, scale);
-  }
-  auto polyline = [&](const char* cls, const char* colour, const char* dash, const auto& pts) {
-    if (pts.empty()) return;
-    out += fmt::format("<polyline class=\"{}\" fill=\"none\" stroke=\"{}\" stroke-width=\"2\"{} points=\"", cls, colour, dash);
-    for (std::size_t i = 0; i < pts.size(); ++i)
-      out += fmt::format("{}{:.2f},{:.2f}", i == 0 ? "" : " ", X(pts[i].x), Y(pts[i].y));
-    out += "\"/>\n";
+  using plot::num;
+  // The view: the map and everything drawn (tracks may leave the map), so all fits the canvas.
+  plot::Extent ext;
+  ext.add(0.0, 0.0);
+  ext.add(static_cast<double>(s.grid.width()), static_cast<double>(s.grid.height()));
+  for (const sim::Sample& q : r.trajectory) ext.add(q.p.x, q.p.y, s.robot_radius);
+  for (std::size_t o = 0; o < r.obstacle_tracks.size(); ++o)
+    for (const sim::Vec2& p : r.obstacle_tracks[o])
+      ext.add(p.x, p.y, o < s.obstacles.size() ? s.obstacles[o].radius : 0.0);
+  plot::Figure fig;
+  fig.title("Simulation of IACO-A* with moving obstacles (cf. Han, Fig. 8)");
+  const plot::Frame f = plot::fit_frame(ext.x0, ext.y0, ext.x1, ext.y1, fig.inner_left(), fig.y() + 4.0,
+                                        fig.inner_width(), 1.2 * fig.inner_width(), 40.0);
+  const auto P = [&](sim::Vec2 p) { return std::pair{f.X(p.x), f.Y(p.y)}; };
+  const auto cells = [&](const std::vector<grid::Cell>& cs) {
+    std::vector<std::pair<double, double>> v;
+    for (const grid::Cell c : cs) v.push_back(P(sim::centre(c)));
+    return v;
   };
-  std::vector<sim::Vec2> g;
-  for (const grid::Cell c : r.global_path) g.push_back(sim::centre(c));
-  polyline("global-path", "#606060", " stroke-dasharray=\"6,4\"", g);
-  for (const sim::Replan& p : r.replans) {
-    std::vector<sim::Vec2> d;
-    for (const grid::Cell c : p.detour) d.push_back(sim::centre(c));
-    polyline("detour", "#2080ff", " stroke-dasharray=\"2,2\"", d);
+  std::string b = fmt::format("<title>{}</title>\n", plot::escape("pathref simulate (Han IACO-A*, Fig. 8)"));
+  b += fmt::format("<rect class=\"map\" x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"white\" stroke=\"black\"/>\n",
+                   num(f.X(0.0)), num(f.Y(static_cast<double>(s.grid.height()))),
+                   num(static_cast<double>(s.grid.width()) * f.scale), num(static_cast<double>(s.grid.height()) * f.scale));
+  b += plot::obstacle_cells(s.grid, f);
+  std::vector<plot::LegendEntry> legend;
+  if (!r.global_path.empty()) {
+    b += plot::polyline(cells(r.global_path), "global-path", plot::kGrey, 2.0, "6 4");
+    legend.push_back({"global path", plot::Swatch::line, plot::kGrey, "6 4"});
   }
-  std::vector<sim::Vec2> traj;
-  for (const sim::Sample& q : r.trajectory) traj.push_back(q.p);
-  polyline("trajectory", "#10a010", "", traj);
+  for (const sim::Replan& p : r.replans)
+    if (!p.detour.empty()) b += plot::polyline(cells(p.detour), "detour", plot::kSky, 2.0, "2 2");
+  if (!r.replans.empty()) legend.push_back({"local detour", plot::Swatch::line, plot::kSky, "2 2"});
+  std::vector<std::pair<double, double>> traj;
+  for (const sim::Sample& q : r.trajectory) traj.push_back(P(q.p));
+  if (!traj.empty()) b += plot::polyline(traj, "trajectory", plot::kGreen, 2.5);
+  legend.push_back({traj.empty() ? "robot — no trajectory" : "robot", plot::Swatch::line, plot::kGreen, "", traj.empty()});
+  for (const sim::Evasion& e : r.evasions)
+    if (!e.path.empty()) b += plot::polyline(cells(e.path), "evasion", plot::kPurple, 2.0, "4 2");
+  if (!r.evasions.empty()) legend.push_back({"evasion", plot::Swatch::line, plot::kPurple, "4 2"});
+
+  plot::LabelPlacer labels(plot::Box{0.0, fig.y(), fig.width(), f.top + f.height() + 8.0});
+  std::string label_svg;
   for (std::size_t o = 0; o < r.obstacle_tracks.size(); ++o) {
-    polyline("obstacle-track", "black", " stroke-dasharray=\"1,3\"", r.obstacle_tracks[o]);
-    if (!r.obstacle_tracks[o].empty()) {
-      const sim::Vec2 p = r.obstacle_tracks[o].front();
-      out += fmt::format("<text class=\"obstacle-label\" x=\"{:.2f}\" y=\"{:.2f}\" font-size=\"12\">O{}</text>\n",
-                         X(p.x) + 4.0, Y(p.y) - 4.0, o + 1);
-      out += fmt::format("<circle class=\"obstacle-start\" cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"{:.2f}\" fill=\"none\" stroke=\"black\"/>\n",
-                         X(p.x), Y(p.y), s.obstacles[o].radius * scale);
-    }
+    if (r.obstacle_tracks[o].empty()) continue;
+    std::vector<std::pair<double, double>> t;
+    for (const sim::Vec2& p : r.obstacle_tracks[o]) t.push_back(P(p));
+    b += plot::polyline(t, "obstacle-track", "black", 1.5, "1 3");
+    const auto [x, y] = t.front();
+    const double rad = (o < s.obstacles.size() ? s.obstacles[o].radius : 0.0) * f.scale;
+    b += fmt::format("<circle class=\"obstacle-start\" cx=\"{}\" cy=\"{}\" r=\"{}\" fill=\"none\" stroke=\"black\"/>\n",
+                     num(x), num(y), num(rad));
+    labels.reserve(plot::Box{x - rad, y - rad, x + rad, y + rad});
+    label_svg += labels.place(x, y, fmt::format("O{}", o + 1), rad + 2.0, "obstacle-label", "black");
   }
-  for (const sim::Evasion& e : r.evasions) {
-    std::vector<sim::Vec2> d;
-    for (const grid::Cell c : e.path) d.push_back(sim::centre(c));
-    polyline("evasion", "#a040c0", " stroke-dasharray=\"4,2\"", d);
-  }
-  // One marker per wait interval, at the place of the wait, labelled with its duration.
-  for (const sim::Wait& wt : r.waits) {
-    const sim::Sample* at = nullptr;
-    for (const sim::Sample& q : r.trajectory)
-      if (q.t == wt.start) {
-        at = &q;
-        break;
-      }
-    if (at == nullptr) continue;
-    out += fmt::format("<circle class=\"wait\" cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"{:.2f}\" fill=\"none\" stroke=\"orange\" stroke-width=\"2\"/>\n",
-                       X(at->p.x), Y(at->p.y), s.robot_radius * scale);
-    out += fmt::format("<text class=\"wait-label\" x=\"{:.2f}\" y=\"{:.2f}\" font-size=\"11\" fill=\"#c06000\">wait {:.1f} s</text>\n",
-                       X(at->p.x) + s.robot_radius * scale + 3.0, Y(at->p.y) + 4.0, wt.end - wt.start);
-  }
-  // Time marks: every `mark` seconds (1 s up to 20 s of run, else 2, 5, 10, 20, 50, ... so that at
-  // most 20 are labelled), at the first sample at or after each mark time, on the robot's
-  // trajectory and on every obstacle's track (the same samples, so equal labels are simultaneous).
-  const double end_t = r.trajectory.empty() ? 0.0 : r.trajectory.back().t;
-  double mark = 1.0;
-  for (const double m : {1.0, 2.0, 5.0, 10.0, 20.0, 50.0, 100.0, 200.0, 500.0, 1000.0, 2000.0, 5000.0}) {
-    mark = m;
-    if (end_t / m <= 20.0) break;
-  }
-  std::vector<std::size_t> marked;
-  std::vector<double> mark_times;
-  {
-    std::int64_t next = 0;
-    for (std::size_t i = 0; i < r.trajectory.size(); ++i) {
-      if (r.trajectory[i].t >= static_cast<double>(next) * mark) {
-        marked.push_back(i);
-        mark_times.push_back(static_cast<double>(next) * mark);
-        while (r.trajectory[i].t >= static_cast<double>(next) * mark) ++next;
-      }
-    }
-  }
-  // Consecutive marks at the same place (a wait) share one dot, labelled "first-last".
-  auto time_marks = [&](const char* cls, const char* colour, const auto& point_of) {
-    for (std::size_t k = 0; k < marked.size();) {
-      const sim::Vec2 p = point_of(marked[k]);
-      std::size_t j = k + 1;
-      while (j < marked.size() && point_of(marked[j]) == p) ++j;
-      const std::string label = j == k + 1 ? fmt::format("{:g}", mark_times[k])
-                                           : fmt::format("{:g}-{:g}", mark_times[k], mark_times[j - 1]);
-      out += fmt::format("<circle class=\"{}\" cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"2\" fill=\"{}\"/>\n", cls, X(p.x), Y(p.y), colour);
-      out += fmt::format("<text class=\"{}-label\" x=\"{:.2f}\" y=\"{:.2f}\" font-size=\"9\" fill=\"{}\">{}</text>\n", cls,
-                         X(p.x) + 3.0, Y(p.y) - 3.0, colour, label);
-      k = j;
-    }
+  if (!r.obstacle_tracks.empty())
+    legend.push_back({"moving obstacle (start ring)", plot::Swatch::line, "black", "1 3"});
+  // figures.waits: one marker per wait, at the place of the wait, labelled with its duration;
+  // consecutive waits less than a robot diameter apart share one marker ("N waits, T s").
+  struct WaitMark {
+    sim::Vec2 p;
+    double total = 0.0;
+    int count = 0;
   };
-  time_marks("time-mark", "#107010", [&](std::size_t i) { return r.trajectory[i].p; });
+  std::vector<WaitMark> wait_marks;
+  for (const sim::Wait& wt : r.waits) {
+    const auto at = std::find_if(r.trajectory.begin(), r.trajectory.end(), [&](const sim::Sample& q) { return q.t == wt.start; });
+    if (at == r.trajectory.end()) continue;
+    if (!wait_marks.empty()) {
+      const sim::Vec2 d{at->p.x - wait_marks.back().p.x, at->p.y - wait_marks.back().p.y};
+      if (d.x * d.x + d.y * d.y < 4.0 * s.robot_radius * s.robot_radius) {
+        wait_marks.back().total += wt.end - wt.start;
+        wait_marks.back().count += 1;
+        continue;
+      }
+    }
+    wait_marks.push_back({at->p, wt.end - wt.start, 1});
+  }
+  const double wait_r = std::max(4.0, s.robot_radius * f.scale);
+  for (const WaitMark& w : wait_marks) {  // every ring first, so no label covers a later ring
+    const auto [x, y] = P(w.p);
+    b += fmt::format("<circle class=\"wait\" cx=\"{}\" cy=\"{}\" r=\"{}\" fill=\"none\" stroke=\"{}\" stroke-width=\"2\"/>\n",
+                     num(x), num(y), num(wait_r), plot::kOrange);
+    labels.reserve(plot::Box{x - wait_r, y - wait_r, x + wait_r, y + wait_r});
+  }
+  for (const WaitMark& w : wait_marks) {
+    const auto [x, y] = P(w.p);
+    label_svg += labels.place(x, y,
+                              w.count == 1 ? fmt::format("wait {:.1f} s", w.total)
+                                           : fmt::format("{} waits, {:.1f} s", w.count, w.total),
+                              wait_r + 2.0, "wait-label", "#A06000");
+  }
+  if (!r.waits.empty()) legend.push_back({"wait (duration)", plot::Swatch::ring, plot::kOrange});
+  // figures.time-marks: on the robot's trajectory and on every obstacle's track at the same samples,
+  // so equal labels are simultaneous; a wait's marks share one dot labelled "first-last".
+  const double end_t = r.trajectory.empty() ? 0.0 : r.trajectory.back().t;
+  const double mark = plot::mark_step(end_t);
+  std::vector<double> times;
+  for (const sim::Sample& q : r.trajectory) times.push_back(q.t);
+  const auto marks = plot::mark_samples(times, mark);
+  std::vector<double> mark_times;
+  for (const auto& m : marks) mark_times.push_back(m.second);
+  const auto at_marks = [&](const auto& point_of) {
+    std::vector<std::pair<double, double>> v;
+    for (const auto& m : marks) v.push_back(P(point_of(m.first)));
+    return v;
+  };
+  b += plot::time_marks(at_marks([&](std::size_t i) { return r.trajectory[i].p; }), mark_times, "time-mark", "#006048",
+                        labels, label_svg);
   for (std::size_t o = 0; o < r.obstacle_tracks.size(); ++o)
     if (r.obstacle_tracks[o].size() == r.trajectory.size())
-      time_marks("obstacle-time-mark", "black", [&](std::size_t i) { return r.obstacle_tracks[o][i]; });
-  const sim::Vec2 st = sim::centre(s.start), go = sim::centre(s.goal);
-  out += fmt::format("<circle class=\"start\" cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"5\" fill=\"green\"/>\n", X(st.x), Y(st.y));
-  out += fmt::format("<text class=\"goal\" x=\"{:.2f}\" y=\"{:.2f}\" font-size=\"16\" fill=\"red\" text-anchor=\"middle\">x</text>\n",
-                     X(go.x), Y(go.y) + 5.0);
-  out += fmt::format("<text class=\"summary\" x=\"{:.2f}\" y=\"{:.2f}\" font-size=\"12\">time {:.3f} s, distance {:.3f} m, waits {}, replans {}, evasions {}, collisions {}; time marks every {:g} s</text>\n",
-                     pad, 2.0 * pad + h * scale + 10.0, r.time, r.distance, r.waits.size(), r.replans.size(),
-                     r.evasions.size(), r.collisions.size(), mark);
-  out += "</svg>\n";
-  return out;
+      b += plot::time_marks(at_marks([&](std::size_t i) { return r.obstacle_tracks[o][i]; }), mark_times,
+                            "obstacle-time-mark", "black", labels, label_svg);
+  const auto [sx, sy] = P(sim::centre(s.start));
+  const auto [gx, gy] = P(sim::centre(s.goal));
+  b += fmt::format("<circle class=\"start\" cx=\"{}\" cy=\"{}\" r=\"6\" fill=\"{}\" stroke=\"black\"/>\n", num(sx), num(sy),
+                   plot::kGreen);
+  b += fmt::format("<path class=\"goal\" d=\"M{} {}L{} {}M{} {}L{} {}\" stroke=\"{}\" stroke-width=\"3\"/>\n", num(gx - 6.0),
+                   num(gy - 6.0), num(gx + 6.0), num(gy + 6.0), num(gx + 6.0), num(gy - 6.0), num(gx - 6.0), num(gy + 6.0),
+                   plot::kVermillion);
+  fig.block(b + label_svg, f.height() + 8.0);
+  legend.push_back({"time mark (s)", plot::Swatch::dot, "#006048"});
+  legend.push_back({"start", plot::Swatch::dot, plot::kGreen});
+  legend.push_back({"goal", plot::Swatch::cross, plot::kVermillion});
+  legend.push_back({"obstacle", plot::Swatch::square, "black"});
+  fig.legend(legend);
+  fig.caption(fmt::format("time {:.3f} s, distance {:.3f} m, waits {}, replans {}, evasions {}, collisions {}.", r.time,
+                          r.distance, r.waits.size(), r.replans.size(), r.evasions.size(), r.collisions.size()),
+              "summary");
+  fig.caption(fmt::format("time marks every {:g} s; labels where they fit", mark), "summary");
+  return fig.svg();
 }
 
 }  // namespace pathref::io

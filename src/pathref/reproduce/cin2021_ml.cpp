@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "pathref/core/error.hpp"
+#include "pathref/io/svg.hpp"
 #include "pathref/ml/classifier.hpp"
 #include "pathref/ml/folds.hpp"
 #include "pathref/reproduce/runs.hpp"
@@ -543,40 +544,18 @@ std::vector<std::pair<std::string, std::string>> cin2021_ml_figures(const Json& 
   const double paper_cv[] = {99.8, 93.2, 91.5, 88.4, 58.3};
   for (int fig = 0; fig < 2; ++fig) {
     const bool ho = fig == 0;
-    const double W = 640, H = 360, x0 = 60, y0 = 30, pw = 560, ph = 270;
-    std::string s = fmt::format(
-        "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{0}\" height=\"{1}\" viewBox=\"0 0 {0} {1}\" font-family=\"sans-serif\" font-size=\"12\">\n"
-        "<rect width=\"{0}\" height=\"{1}\" fill=\"white\"/>\n<text x=\"{2}\" y=\"18\" font-size=\"14\">{3}</text>\n",
-        W, H, x0, ho ? "Hold-out accuracy (%), cin2021 Fig. 3: paper vs pathref (swapped split, mean of seeds)"
-                     : "Tenfold cross-validation accuracy (%), cin2021 Fig. 4: paper vs pathref (RF: mean of forest seeds)");
-    for (int t = 0; t <= 10; ++t) {
-      const double y = y0 + ph - ph * t / 10.0;
-      s += fmt::format("<line x1=\"{}\" y1=\"{:.1f}\" x2=\"{}\" y2=\"{:.1f}\" stroke=\"#ddd\"/><text x=\"{}\" y=\"{:.1f}\" text-anchor=\"end\">{}</text>\n",
-                       x0, y, x0 + pw, y, x0 - 6, y + 4, t * 10);
-    }
-    for (int c = 0; c < 5; ++c) {
-      const Json& r = doc.at("results").at(order[c]);
+    io::BarChart c{ho ? "Hold-out accuracy, cin2021 Fig. 3: paper vs pathref (swapped split, mean of seeds)"
+                      : "Tenfold cross-validation accuracy, cin2021 Fig. 4: paper vs pathref (RF: mean of forest seeds)",
+                   "accuracy (%)", {}, {io::Series{"paper", {}, {}}, io::Series{"pathref", {}, {}}}, 100.0, 1};
+    for (int k = 0; k < 5; ++k) {
+      const Json& r = doc.at("results").at(order[k]);
       const Json& ta = r.at("tenfold").at("accuracy");
-      const double ours = 100.0 * (ho ? r.at("holdout").at("swapped").at("mean").get<double>()
-                                      : (ta.is_object() ? ta.at("mean").get<double>() : ta.get<double>()));
-      const double pap = ho ? paper_ho[c] : paper_cv[c];
-      const double gx = x0 + pw * (c + 0.5) / 5.0;
-      const double bw = 36;
-      for (int b = 0; b < 2; ++b) {
-        const double v = b == 0 ? pap : ours;
-        const double h = ph * v / 100.0;
-        const double x = gx - bw + b * bw;
-        s += fmt::format("<rect x=\"{:.1f}\" y=\"{:.1f}\" width=\"{:.1f}\" height=\"{:.1f}\" fill=\"{}\"/>"
-                         "<text x=\"{:.1f}\" y=\"{:.1f}\" text-anchor=\"middle\" font-size=\"10\">{}</text>\n",
-                         x + 2, y0 + ph - h, bw - 4, h, b == 0 ? "#888888" : "#1f77b4", x + bw / 2, y0 + ph - h - 3,
-                         fixed(v, 1));
-      }
-      s += fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\" text-anchor=\"middle\">{}</text>\n", gx, y0 + ph + 16, names[c]);
+      c.groups.emplace_back(names[k]);
+      c.bars[0].y.push_back(ho ? paper_ho[k] : paper_cv[k]);
+      c.bars[1].y.push_back(100.0 * (ho ? r.at("holdout").at("swapped").at("mean").get<double>()
+                                        : (ta.is_object() ? ta.at("mean").get<double>() : ta.get<double>())));
     }
-    s += fmt::format("<rect x=\"{0}\" y=\"{1}\" width=\"10\" height=\"10\" fill=\"#888888\"/><text x=\"{2}\" y=\"{3}\">paper</text>"
-                     "<rect x=\"{4}\" y=\"{1}\" width=\"10\" height=\"10\" fill=\"#1f77b4\"/><text x=\"{5}\" y=\"{3}\">pathref</text>\n</svg>\n",
-                     x0 + pw - 150, H - 22, x0 + pw - 136, H - 13, x0 + pw - 80, x0 + pw - 66);
-    out.emplace_back(ho ? "fig3-holdout.svg" : "fig4-tenfold.svg", s);
+    out.emplace_back(ho ? "fig3-holdout.svg" : "fig4-tenfold.svg", io::svg_bar_chart(c));
   }
   return out;
 }

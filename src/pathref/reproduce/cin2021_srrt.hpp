@@ -49,6 +49,11 @@ struct SrrtReproduction {
 /// (DomainError).
 [[nodiscard]] SrrtReproduction reproduce_cin2021_srrt(const SrrtReproduceOptions& options);
 
+/// The figures from the document: each scene's first S-RRT and RRT run (run again from its recorded
+/// seed; the runs are deterministic) and the per-run charts (length, nodes, time) of the first n
+/// runs. Used by the reproduction and by `reproduce cin2021-srrt --redraw`.
+[[nodiscard]] std::vector<std::pair<std::string, std::string>> cin2021_srrt_figures(const Json& doc);
+
 /// The markdown report from the document alone (`json_name`: the JSON's path relative to the
 /// report, `figure_dir`: the figures' directory relative to it). Spec: reproduce.markdown.
 [[nodiscard]] std::string cin2021_srrt_markdown(const Json& doc, const std::string& figure_dir,

@@ -11,6 +11,7 @@
 #include "pathref/core/error.hpp"
 #include "pathref/grid/json_codec.hpp"
 #include "pathref/io/builtin_maps.hpp"
+#include "pathref/equations/metrics.hpp"
 #include "pathref/io/svg.hpp"
 #include "pathref/reproduce/runs.hpp"
 
@@ -691,12 +692,23 @@ std::vector<io::Series> curves(const Json& results, const std::vector<std::strin
       s.x.push_back(static_cast<double>(i + 1));
       s.y.push_back(c[i].is_number() ? c[i].get<double>() : std::numeric_limits<double>::infinity());
     }
+    s.absent = "no run found a path";
+    // a best-so-far curve: ring the iteration where it reaches its final value (metrics.converge)
+    if (key.find("best") != std::string::npos &&
+        std::any_of(s.y.begin(), s.y.end(), [](double v) { return std::isfinite(v); }))
+      s.marks.push_back(static_cast<double>(metrics::iterations_to_converge(s.y)));
     out.push_back(s);
   }
   return out;
 }
 
 }  // namespace
+
+/// Captions of the convergence charts: what the rings and the breaks mean.
+constexpr const char* kConvergeNote =
+    "Ring: the iteration where the mean curve reaches its final value (metrics.converge). Hybrids: their final GA phase only, as in the paper.";
+constexpr const char* kGapNote =
+    "A line is broken where some run had no path yet, so the mean over the runs is undefined there.";
 
 std::vector<std::pair<std::string, std::string>> shi2022_figures(const Json& doc) {
   std::vector<std::pair<std::string, std::string>> figs;
@@ -721,7 +733,7 @@ std::vector<std::pair<std::string, std::string>> shi2022_figures(const Json& doc
                       io::svg_line_chart(curves(results, fig9, "mean_best_curve_phase", ""),
                                          io::ChartOptions{fmt::format("{} map: best length per iteration, mean of {} runs (cf. {})",
                                                                       key, n, fig_conv),
-                                                          "iteration", "path length"}));
+                                                          "iteration", "path length", kConvergeNote, kGapNote}));
   }
   const Json& simple = at_or_null(doc, {"results", "simple"});
   if (simple.is_object()) {
@@ -729,11 +741,11 @@ std::vector<std::pair<std::string, std::string>> shi2022_figures(const Json& doc
     figs.emplace_back("trial-error.svg",
                       io::svg_line_chart(curves(simple, fig10, "mean_best_curve_phase", ""),
                                          io::ChartOptions{fmt::format("trial and error: best length, mean of {} runs (cf. Fig. 10)", n),
-                                                          "iteration", "path length"}));
+                                                          "iteration", "path length", kConvergeNote, kGapNote}));
     figs.emplace_back("trial-error-iteration-mean.svg",
                       io::svg_line_chart(curves(simple, fig10, "mean_iteration_curve_phase", ""),
                                          io::ChartOptions{fmt::format("trial and error: iteration mean length, mean of {} runs", n),
-                                                          "iteration", "path length"}));
+                                                          "iteration", "path length", "", kGapNote}));
   }
   return figs;
 }
