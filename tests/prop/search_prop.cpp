@@ -349,3 +349,22 @@ TEST_CASE("prop_workspace_reuse_is_invisible", "[search][prop]") {
     RC_ASSERT(ws.capacity() > 0);
   });
 }
+
+TEST_CASE("prop_move_mask_cache_follows_the_grid", "[search][prop]") {
+  rc::prop("a reused Workspace after a cell of the same grid changes, or the policy does, = the literal procedure", [] {
+    search::Workspace ws;
+    Scenario sc = gen_scenario();
+    const int runs = *rc::gen::inRange(2, 8);
+    for (int r = 0; r < runs; ++r) {
+      const auto h = *rc::gen::element(Heuristic::zero, Heuristic::octile, Heuristic::manhattan);
+      RC_ASSERT(same_outcome(search::astar(ws, sc.g, sc.start, sc.goal, sc.policy, h),
+                             literal_search(sc.g, sc.start, sc.goal, sc.policy, h)));
+      // Next: one cell flipped (start and goal stay free), or another policy, or both.
+      if (*rc::gen::arbitrary<bool>()) {
+        const Cell c = sc.g.cell(*rc::gen::inRange<std::int64_t>(0, sc.g.cell_count()));
+        if (c != sc.start && c != sc.goal) sc.g.set_blocked(c, !sc.g.blocked(c));
+      }
+      if (*rc::gen::arbitrary<bool>()) sc.policy = *testing::gen_policy();
+    }
+  });
+}

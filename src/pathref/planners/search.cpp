@@ -5,6 +5,8 @@
 #include <bit>
 #include <cstdlib>
 #include <limits>
+#include <optional>
+#include <type_traits>
 
 #include "pathref/core/error.hpp"
 
@@ -22,6 +24,13 @@ struct Entry {
   std::uint64_t f;      // order_bits(f)
   std::uint64_t h;      // order_bits(h)
   std::uint32_t index;  // cell index (W * H <= 2^28)
+};
+
+/// The entry of a search with h = 0 for every cell (Dijkstra): the key (g, 0, index) of
+/// search.order with its constant middle part left out (equal h never decide), 16 bytes.
+struct GEntry {
+  std::uint64_t f;      // order_bits(f) = order_bits(g)
+  std::uint32_t index;  // cell index
 };
 
 /// An unsigned integer whose order is the order of the doubles (for every non-NaN double, with
@@ -42,11 +51,44 @@ __extension__ using u128 = unsigned __int128;  // GCC / Clang
   return ka < kb || (ka == kb && a.index < b.index);
 }
 
+/// search.order on (g, 0, index): one 128-bit comparison of (g, index).
+[[nodiscard]] inline bool first(const GEntry& a, const GEntry& b) noexcept {
+  return ((static_cast<u128>(a.f) << 64) | a.index) < ((static_cast<u128>(b.f) << 64) | b.index);
+}
+
+/// A growable array whose append is inlined (std::vector::push_back is not, in the inner loop):
+/// the storage only grows, `n` counts the elements in use.
+template <class E>
+class Stack {
+ public:
+  [[gnu::always_inline]] void push_back(const E& e) {
+    if (n_ == v_.size()) [[unlikely]] grow();
+    v_[n_++] = e;
+  }
+  void pop_back() noexcept { --n_; }
+  void clear() noexcept { n_ = 0; }
+  [[nodiscard]] std::size_t size() const noexcept { return n_; }
+  [[nodiscard]] bool empty() const noexcept { return n_ == 0; }
+  [[nodiscard]] E& operator[](std::size_t i) noexcept { return v_[i]; }
+  [[nodiscard]] const E& operator[](std::size_t i) const noexcept { return v_[i]; }
+  [[nodiscard]] const E& front() const noexcept { return v_[0]; }
+  [[nodiscard]] const E& back() const noexcept { return v_[n_ - 1]; }
+  [[nodiscard]] const E* begin() const noexcept { return v_.data(); }
+  [[nodiscard]] const E* end() const noexcept { return v_.data() + n_; }
+  [[nodiscard]] std::size_t capacity() const noexcept { return v_.size(); }
+
+ private:
+  [[gnu::noinline]] void grow() { v_.resize(std::max<std::size_t>(64, 2 * v_.size())); }
+  std::vector<E> v_;
+  std::size_t n_ = 0;
+};
+
 /// The open list: an implicit d-ary min-heap under `first` (d = arity) over a vector the workspace
 /// keeps. Pops a minimal entry; search.order is total, so which heap pops it does not matter.
 constexpr std::size_t arity = 4;
 
-inline void heap_push(std::vector<Entry>& v, const Entry& e) {
+template <class E>
+[[gnu::always_inline]] inline void heap_push(Stack<E>& v, const E& e) {
   v.push_back(e);
   std::size_t i = v.size() - 1;
   while (i > 0) {
@@ -58,9 +100,10 @@ inline void heap_push(std::vector<Entry>& v, const Entry& e) {
   v[i] = e;
 }
 
-inline Entry heap_pop(std::vector<Entry>& v) {
-  const Entry top = v.front();
-  const Entry last = v.back();
+template <class E>
+inline E heap_pop(Stack<E>& v) {
+  const E top = v.front();
+  const E last = v.back();
   v.pop_back();
   const std::size_t n = v.size();
   if (n == 0) return top;
@@ -97,6 +140,7 @@ constexpr std::uint32_t max_generation = (std::uint32_t{1} << 30) - 1;
 
 using core::CellState;
 using core::Entry;
+using core::GEntry;
 using core::first;
 using core::order_bits;
 using core::heap_pop;
@@ -106,11 +150,87 @@ using core::mark_open;
 using core::max_generation;
 using core::no_parent;
 
+/// The open list: a radix heap on f (Ahuja, Mehlhorn, Orlin & Tarjan, "Faster algorithms for the
+/// shortest path problem", J. ACM 37(2), 1990) over the order-preserving bits of f, with exact
+/// ties. `last` is the f of the last entry taken from the buckets; the entries are partitioned
+/// into
+///   - `same`: the entries with f == last, a heap under search.order (so by (h, index));
+///   - `bucket[i]` (i = 1..64): the entries with f > last whose highest bit differing from last
+///     is bit i - 1, unordered;
+///   - `below`: the entries with f < last (an f smaller than an earlier pop's: only an
+///     inconsistent heuristic or rounding makes one), a heap under search.order.
+/// A pop takes the top of `below` if any (its f is below every other entry's), else the top of
+/// `same`, refilled when empty from the lowest non-empty bucket: its smallest f becomes `last`,
+/// its entries of that f go to `same` and the others to lower buckets. So every pop returns the
+/// first entry of the whole list under search.order, as a single heap would.
+template <class E>
+struct OpenList {
+  core::Stack<E> same;
+  core::Stack<E> below;
+  std::array<core::Stack<E>, 65> bucket;
+  std::uint64_t occupied = 0;  // bit i - 1 set iff bucket[i] is non-empty
+  std::uint64_t last = 0;
+  std::size_t size = 0;
+
+  void clear() noexcept {
+    same.clear();
+    below.clear();
+    for (std::uint64_t m = occupied; m != 0; m &= m - 1) bucket[static_cast<std::size_t>(__builtin_ctzll(m)) + 1].clear();
+    occupied = 0;
+    last = 0;
+    size = 0;
+  }
+  [[nodiscard]] bool empty() const noexcept { return size == 0; }
+  /// Puts e in the part its f belongs to, relative to `last`.
+  [[gnu::always_inline]] void place(const E& e) {
+    if (e.f == last) {
+      heap_push(same, e);
+    } else if (e.f > last) {
+      const auto i = static_cast<std::size_t>(64 - __builtin_clzll(e.f ^ last));
+      bucket[i].push_back(e);
+      occupied |= std::uint64_t{1} << (i - 1);
+    } else {
+      heap_push(below, e);
+    }
+  }
+  void push(const E& e) {
+    place(e);
+    ++size;
+  }
+  /// Pre: !empty().
+  E pop() {
+    --size;
+    if (!below.empty()) return heap_pop(below);
+    if (same.empty()) {
+      const auto i = static_cast<std::size_t>(__builtin_ctzll(occupied)) + 1;
+      core::Stack<E>& from = bucket[i];
+      std::uint64_t m = from.front().f;
+      for (const E& e : from) m = std::min(m, e.f);
+      last = m;
+      occupied &= ~(std::uint64_t{1} << (i - 1));
+      for (const E& e : from) place(e);  // every f here is >= m: none goes to `below` or back to bucket i
+      from.clear();
+    }
+    return heap_pop(same);
+  }
+  [[nodiscard]] std::size_t bytes() const noexcept {
+    std::size_t n = same.capacity() + below.capacity();
+    for (const auto& v : bucket) n += v.capacity();
+    return n * sizeof(E);
+  }
+};
+
 struct Workspace::Impl {
   std::vector<CellState> cells;
-  std::vector<Entry> heap;    // entries whose f differs from that of the last popped entry
-  std::vector<Entry> bucket;  // entries pushed with f equal to that of the last popped entry
+  OpenList<Entry> open;    // searches with a heuristic
+  OpenList<GEntry> gopen;  // searches with h = 0 (Dijkstra)
   std::uint32_t generation = 0;
+  // Move masks of the grid and policy last searched (spec/search.md "Reusing the search state"):
+  // masks[i] = 0x100 | allowed_moves(cell i) once computed, 0 before; valid while the grid equals
+  // mask_grid (same size and cells) and the policy is mask_policy, recomputed lazily otherwise.
+  std::optional<grid::Grid> mask_grid;
+  grid::CornerPolicy mask_policy = grid::CornerPolicy::strict;
+  std::vector<std::uint16_t> masks;
 
   /// Starts a search on `count` cells: grows the arrays if needed, then a new generation (every
   /// mark of an earlier search becomes stale). On wrap-around of the generation counter (after
@@ -125,9 +245,20 @@ struct Workspace::Impl {
       generation = 0;
     }
     ++generation;
-    heap.clear();
-    bucket.clear();
+    open.clear();
+    gopen.clear();
     return generation << 2;
+  }
+
+  /// The move-mask cache for grid g under policy p: kept if g equals the grid of the cached masks
+  /// (Grid::operator==: size and every cell) and p is the same policy, else reset to "none known".
+  std::uint16_t* masks_for(const grid::Grid& g, grid::CornerPolicy p) {
+    if (!mask_grid || mask_policy != p || !(*mask_grid == g)) {
+      mask_grid = g;
+      mask_policy = p;
+      masks.assign(static_cast<std::size_t>(g.cell_count()), 0);
+    }
+    return masks.data();
   }
 };
 
@@ -137,9 +268,11 @@ Workspace::Workspace(Workspace&&) noexcept = default;
 Workspace& Workspace::operator=(Workspace&&) noexcept = default;
 std::size_t Workspace::capacity() const noexcept { return impl_ ? impl_->cells.size() : 0; }
 std::size_t Workspace::bytes() const noexcept {
-  return impl_ ? impl_->cells.capacity() * sizeof(CellState) +
-                     (impl_->heap.capacity() + impl_->bucket.capacity()) * sizeof(Entry)
-               : 0;
+  if (!impl_) return 0;
+  const Impl& w = *impl_;
+  return w.cells.capacity() * sizeof(CellState) + w.open.bytes() + w.gopen.bytes() +
+         w.masks.capacity() * sizeof(std::uint16_t) +
+         (w.mask_grid ? static_cast<std::size_t>(w.mask_grid->cell_count()) : 0);
 }
 Workspace::Impl& access(Workspace& w) noexcept { return *w.impl_; }
 
@@ -180,7 +313,8 @@ std::uint32_t allowed_moves(const grid::Grid& g, grid::Cell c, grid::CornerPolic
   return allowed;
 }
 
-/// The one best-first core. Rule: moves(cell) -> bitmask over the 8 moves, h(cell), f(g, h, cell).
+/// The one best-first core. Rule: moves(cell) -> bitmask over the 8 moves, h(cell), f(g, h, cell);
+/// Rule::zero_h: h = 0 and f = g for every cell (Dijkstra), which selects the 16-byte entries.
 template <class Rule>
 Outcome run_best_first(Workspace::Impl& ws, const grid::Grid& g, grid::Cell start, grid::Cell goal,
                        grid::CornerPolicy policy, Rule& rule) {
@@ -189,23 +323,30 @@ Outcome run_best_first(Workspace::Impl& ws, const grid::Grid& g, grid::Cell star
   require(g.free(start), "search: start cell is blocked");
   require(g.free(goal), "search: goal cell is blocked");
 
-  const std::int64_t width = g.width();
+  constexpr bool zero_h = Rule::zero_h;
+  using E = std::conditional_t<zero_h, GEntry, Entry>;
+  const auto width = static_cast<std::uint32_t>(g.width());  // W * H <= 2^28: 32-bit arithmetic
   const std::uint32_t base = ws.begin(static_cast<std::size_t>(g.cell_count()));
   const std::uint32_t is_open = base | mark_open;
   const std::uint32_t is_closed = base | mark_closed;
   CellState* const cells = ws.cells.data();
-  // The open list is two heaps, a partition of the entries: `bucket` receives the entries pushed
-  // with the f of the last popped entry (on grids most children keep their parent's f), `heap` the
-  // others. A pop takes the first of the two tops under search.order, i.e. the first entry of the
-  // union, so the partition never changes which entry is popped.
-  std::vector<Entry>& heap = ws.heap;
-  std::vector<Entry>& bucket = ws.bucket;
-  std::uint64_t f_last = 0;
+  std::uint16_t* const masks = ws.masks_for(g, policy);
+  OpenList<E>& open = [&ws]() -> OpenList<E>& {
+    if constexpr (zero_h) return ws.gopen;
+    else return ws.open;
+  }();
+  const auto key = [](std::uint32_t index, double f, double h) {
+    if constexpr (zero_h) return GEntry{order_bits(f), index};
+    else return Entry{order_bits(f), order_bits(h), index};
+  };
+  const auto cell_of = [width](std::uint32_t i) {
+    return grid::Cell{static_cast<std::int64_t>(i % width), static_cast<std::int64_t>(i / width)};
+  };
   const auto goal_index = static_cast<std::uint32_t>(g.index(goal));
-  std::array<std::int64_t, 8> offset{};  // index difference of move k (grid.index)
+  std::array<std::int32_t, 8> offset{};  // index difference of move k (grid.index)
   std::array<double, 8> cost{};          // grid::step_cost of move k
   for (std::size_t k = 0; k < 8; ++k) {
-    offset[k] = move_dy[k] * width + move_dx[k];
+    offset[k] = static_cast<std::int32_t>(move_dy[k] * g.width() + move_dx[k]);
     cost[k] = grid::step_cost(grid::Cell{0, 0}, grid::Cell{move_dx[k], move_dy[k]});
   }
 
@@ -213,12 +354,10 @@ Outcome run_best_first(Workspace::Impl& ws, const grid::Grid& g, grid::Cell star
   const auto start_index = static_cast<std::uint32_t>(g.index(start));
   const double h_start = rule.h(start);
   cells[start_index] = CellState{0.0, no_parent, is_open};
-  heap_push(heap, Entry{order_bits(rule.f(0.0, h_start, start)), order_bits(h_start), start_index});
+  open.push(key(start_index, rule.f(0.0, h_start, start), h_start));
 
-  while (!heap.empty() || !bucket.empty()) {
-    const Entry e = (bucket.empty() || (!heap.empty() && first(heap.front(), bucket.front()))) ? heap_pop(heap)
-                                                                                               : heap_pop(bucket);
-    f_last = e.f;
+  while (!open.empty()) {
+    const E e = open.pop();
     CellState& here = cells[e.index];
     if (here.mark == is_closed) continue;  // an older entry of a closed cell: not an expansion
     here.mark = is_closed;
@@ -228,21 +367,28 @@ Outcome run_best_first(Workspace::Impl& ws, const grid::Grid& g, grid::Cell star
     if (e.index == goal_index) {
       out.found = true;
       out.length = g_here;
-      for (std::uint32_t i = e.index; i != no_parent; i = cells[i].parent) out.path.push_back(g.cell(i));
+      for (std::uint32_t i = e.index; i != no_parent; i = cells[i].parent) out.path.push_back(cell_of(i));
       std::reverse(out.path.begin(), out.path.end());
       return out;
     }
 
-    const grid::Cell c{static_cast<std::int64_t>(e.index) % width,
-                       static_cast<std::int64_t>(e.index) / width};
-    // Generated moves: the rule's, restricted to the allowed steps (in bounds, free, policy).
-    std::uint32_t todo = rule.moves(c) & allowed_moves(g, c, policy);
+    // Generated moves: the rule's, restricted to the allowed steps (in bounds, free, policy),
+    // whose mask is computed once per cell of the map and kept in the workspace.
+    std::uint32_t allowed = masks[e.index];
+    if (allowed == 0) {
+      allowed = 0x100u | allowed_moves(g, cell_of(e.index), policy);
+      masks[e.index] = static_cast<std::uint16_t>(allowed);
+    }
+    std::uint32_t todo = allowed & 0xFFu;
+    grid::Cell c{};
+    if constexpr (!zero_h) c = cell_of(e.index);
+    if constexpr (!Rule::all_moves) todo &= rule.moves(cell_of(e.index));
     // Canonical neighbour order (grid.neighbour-order); the order cannot change the result
     // (spec/search.md: each neighbour is relaxed once per expansion, independently).
     while (todo != 0) {
       const auto k = static_cast<std::size_t>(__builtin_ctz(todo));
       todo &= todo - 1;
-      const auto mi = static_cast<std::uint32_t>(static_cast<std::int64_t>(e.index) + offset[k]);
+      const std::uint32_t mi = e.index + static_cast<std::uint32_t>(offset[k]);
       CellState& next = cells[mi];
       if (next.mark == is_closed) continue;  // no reopening
       ++out.generated;  // a child generation (spec/search.md "child counts")
@@ -251,10 +397,13 @@ Outcome run_best_first(Workspace::Impl& ws, const grid::Grid& g, grid::Cell star
       if (fresh || g_new < next.g) {  // parent changes on strictly smaller g
         if (fresh) ++out.child_nodes;  // a new child node (spec/search.md "child counts")
         next = CellState{g_new, e.index, is_open};
-        const grid::Cell m{c.x + move_dx[k], c.y + move_dy[k]};
-        const double h_m = rule.h(m);
-        const Entry child{order_bits(rule.f(g_new, h_m, m)), order_bits(h_m), mi};
-        heap_push(child.f == f_last ? bucket : heap, child);
+        if constexpr (zero_h) {
+          open.push(key(mi, g_new, 0.0));
+        } else {
+          const grid::Cell m{c.x + move_dx[k], c.y + move_dy[k]};
+          const double h_m = rule.h(m);
+          open.push(key(mi, rule.f(g_new, h_m, m), h_m));
+        }
       }
     }
   }
@@ -265,6 +414,8 @@ Outcome run_best_first(Workspace::Impl& ws, const grid::Grid& g, grid::Cell star
 template <heuristics::Heuristic H>
 struct PlainRule {
   grid::Cell goal;
+  static constexpr bool zero_h = H == heuristics::Heuristic::zero;
+  static constexpr bool all_moves = true;
   static constexpr std::uint32_t moves(grid::Cell) noexcept { return 0xFF; }
   double h(grid::Cell n) const {
     if constexpr (H == heuristics::Heuristic::octile) return heuristics::octile(n, goal);
@@ -284,6 +435,8 @@ Outcome run_plain(Workspace::Impl& ws, const grid::Grid& g, grid::Cell start, gr
 /// A user rule behind std::function.
 struct FunctionRule {
   const ExpansionRule& r;
+  static constexpr bool zero_h = false;
+  static constexpr bool all_moves = false;
   std::uint32_t moves(grid::Cell c) const { return r.moves ? r.moves(c) : std::uint8_t{0xFF}; }
   double h(grid::Cell n) const { return r.h(n); }
   double f(double g, double h_n, grid::Cell n) const { return r.f ? r.f(g, h_n, n) : g + h_n; }

@@ -58,7 +58,8 @@ struct Outcome {
 /// Reusable search state (spec/search.md "Reusing the search state"): per-cell g, parent and a
 /// generation-stamped open/closed mark, sized once to the largest grid searched and never cleared
 /// between searches (a new search increments the generation, which makes every old mark stale),
-/// plus the open list's storage. A Workspace carries no result from one search to the next: a
+/// plus the open list's storage and the allowed-move mask of each cell of the grid and policy
+/// last searched (dropped when a search brings another grid or policy). A Workspace carries no result from one search to the next: a
 /// search with a reused Workspace returns exactly what the same search with a fresh one returns
 /// (property prop_workspace_reuse_is_invisible). It is not tied to one grid. Not thread-safe: one
 /// Workspace per thread. Source: pathref. Spec: search.astar
