@@ -95,7 +95,7 @@ TEST_CASE("han.eq7: the stepped factor at d = a and d = b exactly") {
   CHECK(aco::stepped_rho(0.5, 10.0, 6.0, 2.0, 4.0, 0.45, ref) == 0.45);       // the floor
 }
 
-TEST_CASE("han.eq5 and shi2022.eq13: the formulas written out, at hand-computed points") {
+TEST_CASE("han.eq5 and shi2022.eq13: the formulas written out at hand-computed points") {
   // han.eq5: q0 = eps (0.2 + 0.7 (N_max - N_c)/N_max). At N_c = 0: 0.2 + 0.7 = 0.8999999999999999
   // in binary64 (spec/han.md); at N_c = N_max: 0.2; at N_c = 25 of 50: 0.2 + 0.35 = 0.55.
   CHECK(aco::adaptive_q0(1.0, 0, 50) == 0.8999999999999999);
