@@ -26,7 +26,7 @@
 
 using namespace pathref;
 
-TEST_CASE("han.collision.classify: D = c exactly is no encounter; c just above it is one") {
+TEST_CASE("han.collision.classify: D = c exactly is no encounter and c just above it is one") {
   // Robot along the x axis from (0,0) to (4,0); the obstacle moves from (2,0.5) to (2,1), straight
   // away from it. D = 0.5 exactly (the vertical gap at x = 2), so with clearance 0.5 the spec's
   // "D >= c: none" applies; with the next double above 0.5 the obstacle is within the clearance.
@@ -58,7 +58,7 @@ TEST_CASE("han.collision.classify: a tie between pieces goes to the first piece"
   CHECK(sim::classify(line, {3.0, 0.25}, {2.0, 0.25}, 2.0, -1.0).kind == sim::Encounter::frontal);
 }
 
-TEST_CASE("han.eq4: q = q0 takes the argmax; an argmax tie takes the first maximum") {
+TEST_CASE("han.eq4: q = q0 takes the argmax and an argmax tie takes the first maximum") {
   const std::vector<double> w{1.0, 3.0, 3.0, 2.0};
   // q == q0: argmax (spec han.eq4, "q = q0 takes the argmax"), the first of the tied 3s.
   const aco::PseudoRandomChoice c = aco::pseudo_random_choice(w, 0.5, 0.5, 0.0);
