@@ -3,7 +3,7 @@
 // function under test or the function a rule wraps. tools/mutate's catalogue names the mutants
 // these cases kill (docs/testing.md).
 // spec: han.collision.classify, han.eq3, han.eq4, han.eq5, han.eq7, shi2022.eq13, rng.roulette,
-// mecanum.ik, mecanum.fk, shi2022.plan.ga, sensors2023.eq1
+// mecanum.ik, mecanum.fk, shi2022.plan.ga, sensors2023.eq1, han.eq1
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -178,4 +178,18 @@ TEST_CASE("shi2022.plan.ga: with pm = 1 every individual of a 3-node path draws 
   }
   CHECK(tests > 0);
   CHECK(genes == tests);
+}
+
+TEST_CASE("han.eq1: the corner factor multiplies the weight, by hand") {
+  // w_j = tau_j^alpha * eta_j^beta * omega_j^gamma (spec han.eq1) with alpha = 1, beta = 2,
+  // gamma = 1: tau = (1, 2), eta = (0.5, 1), omega = (2, 4) -> w = (1 * 0.25 * 2, 2 * 1 * 4) = (0.5, 8);
+  // with gamma = 2: (1 * 0.25 * 4, 2 * 1 * 16) = (1, 32).
+  const std::vector<double> tau{1.0, 2.0}, eta{0.5, 1.0}, omega{2.0, 4.0};
+  const std::vector<double> w = aco::transition_weights(tau, eta, 1.0, 2.0, aco::CornerFactor{omega, 1.0});
+  REQUIRE(w.size() == 2);
+  CHECK(w[0] == 0.5);
+  CHECK(w[1] == 8.0);
+  const std::vector<double> w2 = aco::transition_weights(tau, eta, 1.0, 2.0, aco::CornerFactor{omega, 2.0});
+  CHECK(w2[0] == 1.0);
+  CHECK(w2[1] == 32.0);
 }
