@@ -17,6 +17,7 @@
 #include "pathref/planners/planner.hpp"
 #include "pathref/planners/search.hpp"
 #include "support/generators.hpp"
+#include "support/reach.hpp"
 
 using namespace pathref;
 using grid::Cell;
@@ -54,6 +55,15 @@ Scenario gen_scenario() {
                              {"iterations", *rc::gen::inRange<std::int64_t>(1, 6)},
                              {"dead_end", *rc::gen::element<std::string>("die", "backtrack")}};
   return sc;
+}
+
+/// Moves the goal off the start when the map has another cell (freeing it), so that properties
+/// about iterations reach their assertions on small maps too (issue 17, vacuity).
+void distinct_ends(Scenario& sc) {
+  const auto n = sc.g.cell_count();
+  if (!(sc.start == sc.goal) || n < 2) return;
+  sc.goal = sc.g.cell((sc.g.index(sc.start) + 1) % n);
+  sc.g.set_blocked(sc.goal, false);
 }
 
 planners::Result plan(const Scenario& sc, const std::string& algo, const planners::Json& params) {
@@ -183,36 +193,50 @@ TEST_CASE("prop_backtracking_ants_never_die_when_goal_reachable", "[aco][prop]")
 }
 
 TEST_CASE("prop_iaco_shi_rho_follows_eq13", "[aco][prop]") {
-  rc::prop("rho_per_iteration = iterated aco::adaptive_rho from rho_initial (shi2022.eq13)", [] {
+  // The oracle is Eq. (13) written out here (spec shi2022.eq13, factor reading, binary64 in the
+  // spec's order): rho(t) = max((T / (T + t')) * (1 / e^(1 - rho(t-1))) * rho(t-1), rho_min), t' =
+  // t - 1 + rho_t_origin — not aco::adaptive_rho, the function the planner calls.
+  pathref::testing::Reach reach;
+  rc::prop("rho_per_iteration = Eq. 13 iterated from rho_initial (shi2022.eq13)", [&reach] {
     Scenario sc = gen_scenario();
+    distinct_ends(sc);
     const bool nomin = *rc::gen::arbitrary<bool>();
     const auto origin = *rc::gen::inRange<std::int64_t>(0, 2);
     const auto N = *rc::gen::inRange<std::int64_t>(1, 12);
     sc.params = planners::Json{{"ants", 1}, {"iterations", N}, {"rho_t_origin", origin}};
     const planners::Result r = plan(sc, nomin ? "iaco-shi-nomin" : "iaco-shi", sc.params);
-    if (sc.start == sc.goal) return;
+    if (!reach.hit(!(sc.start == sc.goal))) return;
     const double rho_min = nomin ? 0.0 : 0.1;
     double rho = 0.9;
     const auto& got = r.extra.at("rho_per_iteration");
     RC_ASSERT(static_cast<std::int64_t>(got.size()) == N);
     for (std::int64_t t = 1; t <= N; ++t) {
       RC_ASSERT(got[static_cast<std::size_t>(t - 1)].get<double>() == rho);
-      rho = aco::adaptive_rho(rho, t - 1 + origin, N, rho_min);
+      const double T = static_cast<double>(N);
+      const double tt = static_cast<double>(t - 1 + origin);
+      const double v = ((T / (T + tt)) * (1.0 / std::exp(1.0 - rho))) * rho;
+      rho = v > rho_min ? v : rho_min;
     }
   });
+  pathref::testing::require_reach(reach, 0.6, "shi2022.eq13 per iteration");
 }
 
 TEST_CASE("prop_iaco_han_q0_and_rho_follow_eq5_eq7", "[aco][prop]") {
-  rc::prop("q0 per iteration = adaptive_q0; rho in [rho_min, 0.7], non-increasing", [] {
+  // The q0 oracle is Eq. (5) written out here (spec han.eq5, epsilon = 1, N_c = t):
+  // q0 = 1 * (0.2 + ((N - t) / N) * 0.7) — not aco::adaptive_q0, the function the planner calls.
+  pathref::testing::Reach reach;
+  rc::prop("q0 per iteration = Eq. 5; rho in [rho_min, 0.7], non-increasing", [&reach] {
     Scenario sc = gen_scenario();
+    distinct_ends(sc);
     sc.params.erase("dead_end");
     const planners::Result r = plan(sc, "iaco-han", sc.params);
-    if (sc.start == sc.goal) return;
+    if (!reach.hit(!(sc.start == sc.goal))) return;
     const auto N = sc.params.at("iterations").get<std::int64_t>();
     const auto& q0 = r.extra.at("q0_per_iteration");
     const auto& rho = r.extra.at("rho_per_iteration");
     for (std::int64_t t = 1; t <= N; ++t) {
-      RC_ASSERT(q0[static_cast<std::size_t>(t - 1)].get<double>() == aco::adaptive_q0(1.0, t, N));
+      const double share_left = static_cast<double>(N - t) / static_cast<double>(N);
+      RC_ASSERT(q0[static_cast<std::size_t>(t - 1)].get<double>() == 1.0 * (0.2 + (share_left * 0.7)));
       const double v = rho[static_cast<std::size_t>(t - 1)].get<double>();
       RC_ASSERT(v >= 0.1);
       RC_ASSERT(v <= 0.7);
@@ -220,6 +244,7 @@ TEST_CASE("prop_iaco_han_q0_and_rho_follow_eq5_eq7", "[aco][prop]") {
     }
     RC_ASSERT(rho[0].get<double>() == 0.7);  // rho_timing = next: the printed rho(0) first
   });
+  pathref::testing::require_reach(reach, 0.6, "han.eq5 / han.eq7 per iteration");
 }
 
 TEST_CASE("prop_distinct_paths_are_valid_and_contain_the_best", "[aco][prop]") {

@@ -11,6 +11,7 @@
 #include "pathref/io/matrix.hpp"
 #include "pathref/io/movingai.hpp"
 #include "support/generators.hpp"
+#include "support/reach.hpp"
 
 using pathref::grid::Grid;
 using namespace pathref::io;
@@ -27,19 +28,25 @@ std::string to_crlf(const std::string& text) {
 }
 
 /// Parses `text` with `parse`; RC-fails unless it succeeds or throws a ParseError whose position
-/// lies within the text (line <= number of lines + 1, column >= 1).
-template <class Parse>
-void parse_or_parse_error(const std::string& text, Parse parse) {
+/// lies within the text (line <= number of lines + 1, column >= 1). On success the grid must be a
+/// well-formed map: written with `write` and parsed again it is the same grid. Returns whether
+/// the text was rejected (the callers count both outcomes: issue 17, no "parses or throws" only).
+template <class Parse, class Write>
+bool parse_or_parse_error(const std::string& text, Parse parse, Write write) {
   std::size_t lines = 1;
   for (const char c : text) lines += c == '\n' ? 1 : 0;
   try {
     const MapFile m = parse(text);
     RC_ASSERT(m.grid.width() >= 1);
+    RC_ASSERT(m.grid.height() >= 1);
+    RC_ASSERT(parse(write(m.grid)).grid == m.grid);
+    return false;
   } catch (const pathref::ParseError& e) {
     RC_ASSERT(e.file() == "bad");
     RC_ASSERT(e.line() >= 1);
     RC_ASSERT(e.line() <= lines + 1);
     RC_ASSERT(e.column() >= 1);
+    return true;
   }
 }
 
@@ -111,17 +118,29 @@ TEST_CASE("formats prop: convert between all formats keeps the grid", "[map_file
 
 TEST_CASE("formats prop: corrupted or truncated text parses or throws ParseError, nothing else",
           "[movingai][matrix][prop]") {
-  rc::prop("one byte changed or the text cut", [] {
+  // Both branches must run: at least 20 % of the corrupted texts rejected and 5 % accepted (and
+  // then well-formed, see parse_or_parse_error).
+  pathref::testing::Reach rejected, accepted;
+  rc::prop("one byte changed or the text cut", [&rejected, &accepted] {
     const Grid g = *pathref::testing::gen_grid(12, 12, 0.6);
     const ReadLimits limits{64, 4096};
-    parse_or_parse_error(corrupt(to_movingai_map(g), ".@GSWOTx#\r\n\t 0123456789-"), [&](const std::string& t) {
-      return parse_movingai_map(t, "bad", {}, limits);
-    });
-    parse_or_parse_error(corrupt(to_matrix_text(g), "01 ,;\r\n\t%.[]x2"),
-                         [&](const std::string& t) { return parse_matrix(t, "bad", limits); });
-    parse_or_parse_error(corrupt(to_matlab_text(g), "01 ,;\r\n\t%.[]=Gx2"),
-                         [&](const std::string& t) { return parse_matrix(t, "bad", limits); });
+    const auto record = [&](bool r) {
+      rejected.hit(r);
+      accepted.hit(!r);
+    };
+    record(parse_or_parse_error(
+        corrupt(to_movingai_map(g), ".@GSWOTx#\r\n\t 0123456789-"),
+        [&](const std::string& t) { return parse_movingai_map(t, "bad", {}, limits); },
+        [](const Grid& x) { return to_movingai_map(x); }));
+    record(parse_or_parse_error(corrupt(to_matrix_text(g), "01 ,;\r\n\t%.[]x2"),
+                                [&](const std::string& t) { return parse_matrix(t, "bad", limits); },
+                                [](const Grid& x) { return to_matrix_text(x); }));
+    record(parse_or_parse_error(corrupt(to_matlab_text(g), "01 ,;\r\n\t%.[]=Gx2"),
+                                [&](const std::string& t) { return parse_matrix(t, "bad", limits); },
+                                [](const Grid& x) { return to_matlab_text(x); }));
   });
+  pathref::testing::require_reach(rejected, 0.2, "corrupted texts rejected with a ParseError");
+  pathref::testing::require_reach(accepted, 0.05, "corrupted texts still accepted");
 }
 
 TEST_CASE("formats prop: scenario lines written from random cells parse back", "[movingai][scen][prop]") {

@@ -15,6 +15,7 @@
 #include "pathref/rng/draws.hpp"
 #include "pathref/rng/mt19937.hpp"
 #include "support/generators.hpp"
+#include "support/reach.hpp"
 
 using namespace pathref;
 using grid::Cell;
@@ -151,11 +152,14 @@ TEST_CASE("prop: shi2022.op.elite never loses the best") {
 }
 
 TEST_CASE("prop: shi2022.op.crossover and shi2022.op.mutation children are valid paths") {
-  rc::prop("children", [] {
+  // Vacuity (issue 17): about a third of the generated maps give no two initial paths; the
+  // property must still reach its assertions in at least 40 % of the cases (measured: about 2/3).
+  pathref::testing::Reach reach;
+  rc::prop("children", [&reach] {
     const Scenario sc = gen_scenario(0.25);
     const std::vector<Path> ps = some_paths(sc, *rc::gen::arbitrary<std::uint32_t>(), 2);
     RC_TAG(ps.size() >= 2 ? "two paths" : "initialisation gave up");
-    if (ps.size() < 2) return;  // the initialisation gave up on this map: nothing to check
+    if (!reach.hit(ps.size() >= 2)) return;  // the initialisation gave up on this map
     for (const ga::CrossPoint pt : ga::crossover_points(ps[0], ps[1])) {
       const ga::Children c = ga::crossover_at(ps[0], ps[1], pt);
       RC_ASSERT(valid(sc, c.first));
@@ -169,6 +173,7 @@ TEST_CASE("prop: shi2022.op.crossover and shi2022.op.mutation children are valid
         RC_ASSERT(valid(sc, m));
       }
   });
+  pathref::testing::require_reach(reach, 0.4, "crossover/mutation children");
 }
 
 TEST_CASE("prop: GA planners return valid paths, replay by seed, never beat Dijkstra") {

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <numbers>
 #include <vector>
 
@@ -93,6 +94,42 @@ TEST_CASE("prop_step_cost_is_one_or_sqrt2", "[grid][prop]") {
     const double c = grid::step_cost(a, b);
     RC_ASSERT(c == ((dx != 0 && dy != 0) ? std::numbers::sqrt2 : 1.0));
     RC_ASSERT(grid::step_cost(b, a) == c);
+  });
+}
+
+TEST_CASE("prop_neighbours_equal_the_corner_policy_written_out", "[grid][prop]") {
+  // Oracle independent of grid::step_allowed (which grid::neighbours calls): spec grid.corner-policy
+  // and grid.neighbour-order written out over the 8 offsets in the spec's order, with "free" read
+  // from in_bounds and blocked only; costs 1 and sqrt(2) (grid.moves).
+  rc::prop("neighbours == brute force over the 8 offsets", [] {
+    const auto g = *testing::gen_grid(10, 10, 0.5);
+    const auto policy = *testing::gen_policy();
+    const Cell c = any_cell(g);
+    RC_PRE(g.free(c));
+    const auto f = [&](Cell o) { return g.in_bounds(o) && !g.blocked(o); };
+    const std::array<std::array<std::int64_t, 2>, 8> order{
+        {{-1, -1}, {0, -1}, {1, -1}, {-1, 0}, {1, 0}, {-1, 1}, {0, 1}, {1, 1}}};
+    std::vector<grid::Move> want;
+    for (const auto& [dx, dy] : order) {
+      const Cell b{c.x + dx, c.y + dy};
+      if (!f(b)) continue;
+      bool ok = true;
+      if (dx != 0 && dy != 0) {
+        const bool o1 = f(Cell{c.x + dx, c.y});
+        const bool o2 = f(Cell{c.x, c.y + dy});
+        ok = policy == CornerPolicy::never    ? false
+             : policy == CornerPolicy::strict ? (o1 && o2)
+             : policy == CornerPolicy::one    ? (o1 || o2)
+                                              : true;
+      }
+      if (ok) want.push_back(grid::Move{b, dx != 0 && dy != 0 ? std::sqrt(2.0) : 1.0});
+    }
+    const auto got = grid::neighbours(g, c, policy);
+    RC_ASSERT(got.size() == want.size());
+    for (std::size_t k = 0; k < got.size(); ++k) {
+      RC_ASSERT(got[k].to == want[k].to);
+      RC_ASSERT(got[k].cost == want[k].cost);
+    }
   });
 }
 

@@ -14,6 +14,7 @@
 
 #include "pathref/core/error.hpp"
 #include "pathref/geometry/inflation.hpp"
+#include "support/reach.hpp"
 
 using namespace pathref;
 using namespace pathref::geometry;
@@ -257,8 +258,16 @@ TEST_CASE("prop_inflation_translation_by_whole_cells", "[inflation][prop]") {
 TEST_CASE("prop_inflation_float_differs_only_near_r", "[inflation][prop]") {
   static int disagreements = 0;
   static int ties = 0;
-  rc::prop("a binary64 variant disagrees only on cells whose exact distance is within 1e-9 of r", [] {
-    const IScene is = *gen_scene();
+  // Random scenes hit a tie (a cell at exact distance r) only now and then; in half of the cases a
+  // triangle is added whose nearest point lies exactly r to the right of the middle of the last
+  // column's bottom cell, so the tie branch is reached on purpose (require_reach below).
+  pathref::testing::Reach tie_cases;
+  rc::prop("a binary64 variant disagrees only on cells whose exact distance is within 1e-9 of r", [&tie_cases] {
+    IScene is = *gen_scene();
+    if (*rc::gen::arbitrary<bool>()) {
+      const IP v{is.ox + is.w * is.s + is.r, is.oy + is.s / 2};
+      is.polys.push_back({v, IP{v.x + 10, v.y - 5}, IP{v.x + 10, v.y + 5}});
+    }
     const Scene s = to_scene(is);
     RC_PRE(valid(s));
     std::vector<std::vector<DP>> dp;
@@ -273,11 +282,13 @@ TEST_CASE("prop_inflation_float_differs_only_near_r", "[inflation][prop]") {
     Scene lo = s, hi = s;
     lo.radius = *parse_decimal(std::to_string(is.r * 10000000 - 1) + "e-9");
     hi.radius = *parse_decimal(std::to_string(is.r * 10000000 + 1) + "e-9");
+    bool case_tie = false;
     for (I y = 0; y < is.h; ++y)
       for (I x = 0; x < is.w; ++x) {
         bool tie = false;
         for (std::size_t k = 0; k < s.polygons.size(); ++k) tie = tie || compare_cell_distance(s, k, {x, y}) == 0;
         if (tie) ++ties;
+        case_tie = case_tie || tie;
         if (float_blocked(s, dp, r, x, y) == g.blocked({x, y})) continue;
         ++disagreements;
         // exact distance in [r - 1e-9, r + 1e-9] for the deciding polygon(s)
@@ -289,11 +300,11 @@ TEST_CASE("prop_inflation_float_differs_only_near_r", "[inflation][prop]") {
         }
         RC_ASSERT(near);
       }
+    tie_cases.hit(case_tie);
   });
-  // Random scenes hit ties and binary64 mistakes only now and then (the counts are printed, not
-  // asserted, so the property is not flaky); the case below pins one of each deterministically.
+  // binary64 mistakes stay rare (printed, not asserted); the case below pins one deterministically.
   INFO("ties " << ties << ", binary64 disagreements " << disagreements);
-  SUCCEED();
+  pathref::testing::require_reach(tie_cases, 0.2, "scenes with a cell at distance exactly r");
 }
 
 TEST_CASE("inflation: a constructed tie exists and binary64 decides it wrongly", "[inflation]") {

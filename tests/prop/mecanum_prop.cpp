@@ -86,6 +86,31 @@ rc::Gen<DriveParams> gen_params() {
 
 }  // namespace
 
+TEST_CASE("prop_ik_and_fk_are_the_closed_forms_of_the_spec", "[mecanum][prop]") {
+  // Oracle independent of ik_matrix (issue 17): FK(IK(t)) == t passes for any full-rank sign
+  // error, so here both directions are compared with the formulas of spec/mecanum.md written out:
+  //   IK: w_FL = (vx - vy - k w)/r, w_FR = (vx + vy + k w)/r, w_RL = (vx + vy - k w)/r,
+  //       w_RR = (vx - vy + k w)/r, k = lx + ly;
+  //   FK (least squares; the columns of J are orthogonal): vx = r/4 (w1 + w2 + w3 + w4),
+  //       vy = r/4 (-w1 + w2 + w3 - w4), w = r/(4k) (-w1 + w2 - w3 + w4),
+  // FK for arbitrary wheel speeds (not only those IK produces, which any inverse would recover).
+  rc::prop("IK and FK equal the printed closed forms", [] {
+    const Geometry g = *gen_geometry();
+    const Twist t = *gen_twist();
+    const double k = g.lx + g.ly;
+    const WheelSpeeds w = inverse_kinematics(t, g);
+    RC_ASSERT(near(w(0), ((t.vx - t.vy) - k * t.omega) / g.r, 1e-12));
+    RC_ASSERT(near(w(1), ((t.vx + t.vy) + k * t.omega) / g.r, 1e-12));
+    RC_ASSERT(near(w(2), ((t.vx + t.vy) - k * t.omega) / g.r, 1e-12));
+    RC_ASSERT(near(w(3), ((t.vx - t.vy) + k * t.omega) / g.r, 1e-12));
+    const WheelSpeeds q = *gen_wheels();
+    const Twist f = forward_kinematics(q, g);
+    RC_ASSERT(near(f.vx, g.r / 4.0 * (q(0) + q(1) + q(2) + q(3)), 1e-12));
+    RC_ASSERT(near(f.vy, g.r / 4.0 * (-q(0) + q(1) + q(2) - q(3)), 1e-12));
+    RC_ASSERT(near(f.omega, g.r / (4.0 * k) * (-q(0) + q(1) - q(2) + q(3)), 1e-12));
+  });
+}
+
 TEST_CASE("prop_fk_inverts_ik", "[mecanum][prop]") {
   rc::prop("FK(IK(t)) == t up to rounding", [] {
     const Geometry g = *gen_geometry();

@@ -8,6 +8,7 @@
 
 #include "pathref/rng/draws.hpp"
 #include "pathref/rng/mt19937.hpp"
+#include "support/reach.hpp"
 
 using namespace pathref;
 
@@ -77,6 +78,53 @@ TEST_CASE("prop_roulette_picks_positive_weight_at_the_cumsum_crossing", "[rng][p
       c += w[i];
       if (w[i] > 0.0) RC_ASSERT(c < u * total);
     }
+  });
+}
+
+TEST_CASE("prop_roulette_exact_cumulative_sum_ties", "[rng][prop]") {
+  // Uniform u over 2^53 values almost never makes u * total equal a cumulative sum, the only place
+  // where ">=" and ">" differ (issue 17). Here the weights are integers padded to a power-of-two
+  // total 2^e, and u = c / 2^e for c a cumulative sum at a positive weight, so u * total == c
+  // exactly. Oracle (written out, spec rng.roulette): the first index with w > 0 and cumsum >= c.
+  pathref::testing::Reach ties;
+  rc::prop("u * total equal to a cumulative sum picks the piece that completes it", [&ties] {
+    auto w = *rc::gen::nonEmpty(rc::gen::container<std::vector<double>>(
+        rc::gen::map(rc::gen::inRange(0, 5), [](int k) { return static_cast<double>(k); })));
+    double sum = 0.0;
+    for (double x : w) sum += x;
+    double total = 1.0;
+    while (total < sum || total == 0.0) total *= 2.0;
+    if (total > sum) w.push_back(total - sum);  // the pad: total is a power of two
+    std::vector<double> cums;                   // cumulative sums at the positive weights
+    double c = 0.0;
+    for (double x : w) {
+      c += x;
+      if (x > 0.0) cums.push_back(c);
+    }
+    const double target = *rc::gen::elementOf(cums);
+    const double u = target / total;  // exact: total is a power of two
+    const bool tie = target < total;  // u = 1 is out of range: the last cumulative sum is not drawn
+    RC_PRE(tie);
+    ties.hit(u * total == target);
+    std::size_t want = w.size();
+    c = 0.0;
+    for (std::size_t i = 0; i < w.size(); ++i) {
+      c += w[i];
+      if (w[i] > 0.0 && c >= target) {
+        want = i;
+        break;
+      }
+    }
+    RC_ASSERT(rng::roulette(w, u) == want);
+  });
+  pathref::testing::require_reach(ties, 1.0, "exact ties u * total == a cumulative sum");
+}
+
+TEST_CASE("prop_bernoulli_at_u_equal_p_is_false", "[rng][prop]") {
+  rc::prop("bernoulli(u, u) is false: the spec's u < p is strict", [] {
+    const double u = *unit_draw();
+    RC_ASSERT(!rng::bernoulli(u, u));
+    RC_ASSERT(rng::bernoulli(u, std::nextafter(u, 2.0)));
   });
 }
 

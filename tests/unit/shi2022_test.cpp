@@ -57,6 +57,16 @@ TEST_CASE("shi2022.eq1: the rule evaluates grid::cell_centre with its forms", "[
     }
   }
   CHECK_THROWS_AS(rule->eval({{"i", 36}, {"width", 6}, {"height", 6}}), DomainError);
+  // Hand-derived values of the corrected form (x, y) = (i mod W + 1/2, floor(i / W) + 1/2) on the
+  // 6x6 map (an oracle independent of grid::cell_centre, issue 17): i = 0 -> (0.5, 0.5),
+  // i = 7 -> (1.5, 1.5), i = 35 -> (5.5, 5.5), i = 11 -> (5.5, 1.5).
+  const std::int64_t is[] = {0, 7, 35, 11};
+  const double xs[] = {0.5, 1.5, 5.5, 5.5}, ys[] = {0.5, 1.5, 5.5, 1.5};
+  for (std::size_t k = 0; k < 4; ++k) {
+    const rules::Json out = rule->eval({{"i", is[k]}, {"width", 6}, {"height", 6}, {"form", "corrected"}});
+    CHECK(out.at("x").get<double>() == xs[k]);
+    CHECK(out.at("y").get<double>() == ys[k]);
+  }
 }
 
 TEST_CASE("shi2022.eq2: weights, probabilities and the optional corner factor", "[shi2022]") {
