@@ -66,6 +66,7 @@ struct PlanOptions {
   bool json = false;
   std::string json_out;
   std::string svg;
+  bool cell_numbers = false;  ///< --cell-numbers (figures.cell-numbers): grid planners' figures only
   std::string trace;  ///< --trace FILE (spec/rng.md#draw-traces)
   MapReadArgs read;  ///< --format, --swamp, --water, --max-side, --max-cells (spec/formats.md#cli-map-options)
 };
@@ -207,7 +208,7 @@ void print_report(const io::PlanRecord& rec, const grid::Grid& g, const Json& j,
 
 /// The SVG figure: the map with the path (and, for iterative planners, the convergence curves of
 /// the best and mean length per iteration).
-std::string plan_svg(const io::PlanRecord& rec, const grid::Grid& g, const Json& j) {
+std::string plan_svg(const io::PlanRecord& rec, const grid::Grid& g, const Json& j, bool cell_numbers) {
   const planners::Result& r = rec.result;
   const std::string label =
       r.found ? fmt::format("{} (length {:.2f}, {} turns)", rec.algo, r.length,
@@ -239,7 +240,7 @@ std::string plan_svg(const io::PlanRecord& rec, const grid::Grid& g, const Json&
   }
   const std::string title = fmt::format("{} {}x{}: {}, policy {}, seed {}", rec.map.name, g.width(),
                                         g.height(), rec.algo, grid::to_string(rec.policy), rec.seed);
-  if (r.best_per_iteration.empty()) return io::svg_map(g, rec.start, rec.goal, layers, title);
+  if (r.best_per_iteration.empty()) return io::svg_map(g, rec.start, rec.goal, layers, title, cell_numbers);
   std::vector<io::Series> series;
   const auto curve = [](std::string name, const std::vector<double>& y) {
     io::Series s{std::move(name), {}, y};
@@ -255,7 +256,8 @@ std::string plan_svg(const io::PlanRecord& rec, const grid::Grid& g, const Json&
                                io::ChartOptions{"Convergence", "iteration", "path length",
                                                 "Ring: the iteration where the best length reaches its final value "
                                                 "(metrics.converge).",
-                                                "A line is broken at iterations without a path (no finite length)."});
+                                                "A line is broken at iterations without a path (no finite length)."},
+                               cell_numbers);
 }
 
 /// `pathref plan`: exit 0 when a path was found, 1 when the goal is unreachable.
@@ -274,6 +276,8 @@ int run_plan(const PlanOptions& o) {
     a.overrides = parse_sets(o.sets);
     a.json = o.json;
     a.json_out = o.json_out;
+    if (o.cell_numbers)
+      throw UsageError("--cell-numbers numbers grid cells; " + o.algo + " plans in the plane (no cells to number)");
     a.svg = o.svg;
     a.trace = o.trace;
     a.read = o.read;
@@ -290,6 +294,7 @@ int run_plan(const PlanOptions& o) {
   if (o.start_xy || o.goal_xy)
     throw UsageError(fmt::format("--{} is for the continuous planners ({}); {} plans on grid cells: give --start/--goal X,Y",
                                  o.start_xy ? "start-xy" : "goal-xy", "rrt, s-rrt", o.algo));
+  if (o.cell_numbers && o.svg.empty()) throw UsageError("--cell-numbers goes with --svg FILE");
   const std::uint32_t seed = parse_seed(o.seed);
   const bool policy_is_default = o.policy.empty();
   const grid::CornerPolicy policy =
@@ -323,8 +328,11 @@ int run_plan(const PlanOptions& o) {
 
   const Json j = io::plan_to_json(rec, g);
   // Files first: a file that cannot be written is an error (exit 2) before anything is printed.
+  // The figure is drawn before any file is written: a figure that cannot be drawn (cell numbers
+  // on cells too small) leaves no JSON file behind.
+  const std::string figure = o.svg.empty() ? std::string() : plan_svg(rec, g, j, o.cell_numbers);
   if (!o.json_out.empty()) write_output_file(o.json_out, j.dump(2) + "\n");
-  if (!o.svg.empty()) write_figure(o.svg, plan_svg(rec, g, j));
+  if (!o.svg.empty()) write_figure(o.svg, figure);
   if (o.json)
     fmt::print("{}\n", j.dump(2));
   else
@@ -344,9 +352,10 @@ std::string endpoint_text(const std::optional<grid::Cell>& c) {
 
 /// `pathref maps [NAME] [--svg FILE]`: the table of built-ins, or one map's pathref-grid 1 text
 /// (and its drawing).
-int run_maps(const std::string& name, const std::string& svg) {
+int run_maps(const std::string& name, const std::string& svg, bool cell_numbers) {
   if (name.empty()) {
     if (!svg.empty()) throw UsageError("maps --svg needs a map NAME");
+    if (cell_numbers) throw UsageError("maps --cell-numbers needs a map NAME and --svg FILE");
     for (const io::BuiltinMap& b : io::builtin_maps()) {
       const io::MapFile m = io::load_builtin_map(b);
       fmt::print("{}  {}x{}  start {}  goal {}  {} blocked cells\n", b.name, m.grid.width(),
@@ -358,11 +367,12 @@ int run_maps(const std::string& name, const std::string& svg) {
   const io::BuiltinMap* b = io::find_builtin_map(name);
   if (b == nullptr)
     throw UsageError(fmt::format("unknown built-in map '{}' (known: {})", name, io::builtin_map_names()));
+  if (cell_numbers && svg.empty()) throw UsageError("--cell-numbers goes with --svg FILE");
   fmt::print("{}", b->text);
   if (!svg.empty()) {
     const io::MapFile m = io::load_builtin_map(*b);
     write_figure(svg, io::svg_map(m.grid, m.start, m.goal, {},
-                                     fmt::format("{} {}x{}", b->name, m.grid.width(), m.grid.height())));
+                                     fmt::format("{} {}x{}", b->name, m.grid.width(), m.grid.height()), cell_numbers));
   }
   return 0;
 }
@@ -436,6 +446,9 @@ void add_plan_commands(CLI::App& app, Action& run) {
   plan->add_option("--json-out", o.json_out, "also write the JSON object to FILE")->type_name("FILE");
   plan->add_option("--svg", o.svg, "write an SVG figure: map, obstacles, S, T, path, legend (+ convergence)")
       ->type_name("FILE");
+  plan->add_flag("--cell-numbers", o.cell_numbers,
+                 "with --svg: number every cell i = y*W + x as in Shi's Fig. 1A (small maps; an error when "
+                 "the numbers do not fit the cells)");
   plan->add_option("--trace", o.trace,
                    "write every random draw (index, value, purpose, context) as JSON lines to FILE "
                    "(spec/rng.md#draw-traces; compare two with pathref trace-diff)")
@@ -454,7 +467,9 @@ void add_plan_commands(CLI::App& app, Action& run) {
   static std::string show_svg;
   maps->add_option("name", show, "print this built-in map as pathref-grid 1 text");
   maps->add_option("--svg", show_svg, "with NAME: also draw the map (S, T, obstacles) to FILE")->type_name("FILE");
-  maps->callback([&run] { run = [] { return run_maps(show, show_svg); }; });
+  static bool show_numbers = false;
+  maps->add_flag("--cell-numbers", show_numbers, "with --svg: number every cell i = y*W + x (Shi's Fig. 1A)");
+  maps->callback([&run] { run = [] { return run_maps(show, show_svg, show_numbers); }; });
 }
 
 }  // namespace pathref::cli

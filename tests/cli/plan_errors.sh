@@ -35,6 +35,15 @@ expect_exit 2 "--set expects key=value, got 'heuristic'" "${g[@]}" --algo astar 
 expect_exit 2 "--set heuristic given more than once" "${g[@]}" --algo astar --set heuristic=octile --set heuristic=zero
 expect_exit 2 "unknown parameter 'heuristic' (known: none)" "${g[@]}" --algo dijkstra --set heuristic=octile
 expect_exit 2 "--policy: diag not in {never,strict,one,always}" "${g[@]}" --algo astar --policy diag
+# --cell-numbers (figures.cell-numbers): only with --svg, only on cells the numbers fit, never a
+# JSON file left behind by a figure that could not be drawn, never on the continuous planners.
+expect_exit 2 "--cell-numbers goes with --svg FILE" "${g[@]}" --algo astar --cell-numbers
+expect_exit 2 "cell numbers need cells of at least" "${g[@]}" --algo astar --cell-numbers --svg "$tmp/n.svg" --json-out "$tmp/n.json"
+[ ! -e "$tmp/n.svg" ] && [ ! -e "$tmp/n.json" ] || { echo "FAIL: a failed --cell-numbers figure left files"; exit 1; }
+expect_exit 0 "" plan --builtin shi6x6 --algo astar --cell-numbers --svg "$tmp/n.svg"
+grep -q 'class="cell-numbers"' "$tmp/n.svg" || { echo "FAIL: no cell numbers in $tmp/n.svg"; exit 1; }
+expect_exit 2 "maps --cell-numbers needs a map NAME and --svg FILE" maps --cell-numbers
+expect_exit 2 "--cell-numbers goes with --svg FILE" maps shi6x6 --cell-numbers
 for bad in -1 4294967296 0x10 +5 1e3 "" " 7" 99999999999; do
   expect_exit 2 "--seed expects a decimal integer from 0 to 4294967295, got '$bad'" "${g[@]}" --algo astar --seed "$bad"
 done

@@ -185,6 +185,8 @@ def cli_figures(pathref, out):
         ("plan-kinematic.svg", ["plan", "--builtin", "grid20", "--algo", "astar-kinematic", "--svg"]),
         ("plan-srrt.svg", ["plan", "--map", f"{d}/scenes/srrt_walls.json", "--algo", "s-rrt", "--seed", "3", "--svg"]),
         ("maps-grid20.svg", ["maps", "grid20", "--svg"]),
+        ("maps-shi6x6-numbers.svg", ["maps", "shi6x6", "--cell-numbers", "--svg"]),
+        ("plan-shi6x6-numbers.svg", ["plan", "--builtin", "shi6x6", "--algo", "aco", "--cell-numbers", "--svg"]),
         ("inflate-ushape.svg", ["inflate", f"{d}/scenes/ushape.json", "--svg"]),
         ("simulate-fused.svg", ["simulate", f"{d}/sim/sensors2023_mixed.json", "--svg"]),
     ]

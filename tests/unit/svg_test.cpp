@@ -209,6 +209,42 @@ TEST_CASE("svg: map has one black rect per blocked cell, (0,0) at the lower left
   CHECK(std::count(d.begin(), d.end(), 'M') == 2 + 1);
 }
 
+TEST_CASE("svg: cell numbers i = y*W + x at cell centres, white on obstacles, none under S and T", "[svg]") {
+  // figures.cell-numbers. Same 3 x 2 map: blocked (2,1) and (0,0); S = (1,0) = 1, T = (0,1) = 3.
+  const Grid g = Grid::from_rows_top_first({"..#", "#.."});
+  const auto plain = parse_xml(io::svg_map(g, Cell{1, 0}, Cell{0, 1}, {}, "m"));
+  CHECK(with_class(plain, "g", "cell-numbers").empty());  // off by default
+  const auto els = parse_xml(io::svg_map(g, Cell{1, 0}, Cell{0, 1}, {}, "m", true));
+  const auto map = with_class(els, "rect", "map");
+  REQUIRE(map.size() == 1);
+  const double mx = attr(map[0], "x"), my = attr(map[0], "y"), s = attr(map[0], "width") / 3.0;
+  // The texts directly inside <g class="cell-numbers">, in document order.
+  std::vector<Element> numbers;
+  int group_depth = -1;
+  for (const auto& e : els) {
+    if (group_depth >= 0 && e.depth <= group_depth) break;
+    if (group_depth >= 0 && e.name == "text" && e.depth == group_depth + 1) numbers.push_back(e);
+    if (e.name == "g" && e.attrs.count("class") && e.attrs.at("class") == "cell-numbers") group_depth = e.depth;
+  }
+  // Written out by hand: cells in row order (y = 0 first), without S (1) and T (3).
+  struct Expected { std::string text; double cx, cy; bool on_obstacle; };
+  const std::vector<Expected> expected{{"0", 0.5, 0.5, true}, {"2", 2.5, 0.5, false},
+                                       {"4", 1.5, 1.5, false}, {"5", 2.5, 1.5, true}};
+  REQUIRE(numbers.size() == expected.size());
+  for (std::size_t k = 0; k < expected.size(); ++k) {
+    CHECK(numbers[k].text == expected[k].text);
+    CHECK(attr(numbers[k], "x") == Approx(mx + expected[k].cx * s).margin(0.01));
+    // Baseline 0.36 font sizes below the centre; y flipped (row 0 at the bottom).
+    CHECK(attr(numbers[k], "y") == Approx(my + (2.0 - expected[k].cy) * s + 0.36 * 14.0).margin(0.01));
+    CHECK(attr(numbers[k], "font-size") >= 14.0);
+    CHECK((numbers[k].attrs.count("fill") == 1 && numbers[k].attrs.at("fill") == "white") == expected[k].on_obstacle);
+  }
+  // 20 x 20: "399" needs about 31 units a cell, the map gets about 23 -> a UsageError naming the limit.
+  const Grid big(20, 20);
+  CHECK_THROWS_AS(io::svg_map(big, Cell{0, 0}, Cell{19, 19}, {}, "big", true), pathref::UsageError);
+  CHECK_NOTHROW(io::svg_map(big, Cell{0, 0}, Cell{19, 19}, {}, "big"));
+}
+
 TEST_CASE("svg: several paths, escaping, empty path, no endpoints", "[svg]") {
   const Grid g(4, 4);
   const std::vector<io::PathLayer> paths{

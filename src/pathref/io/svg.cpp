@@ -29,10 +29,34 @@ std::int64_t label_every(double cell, double label_w) {
       if (static_cast<double>(k * m) * cell >= label_w + 4.0) return k * m;
 }
 
+/// figures.cell-numbers: each cell's number i = y·W + x (grid.index) at its centre in grey (white on
+/// obstacles), at the
+/// minimum font size kFont, except the start and goal cells (their markers say S and T). UsageError
+/// when the longest number does not fit a cell (wider than 0.9 of it, or kFont above 0.6 of it).
+std::string cell_number_labels(const grid::Grid& g, const plot::Frame& f, std::optional<grid::Cell> start,
+                               std::optional<grid::Cell> goal) {
+  const std::string longest = std::to_string(g.width() * g.height() - 1);
+  const double need = std::max(plot::text_width(longest) / 0.9, kFont / 0.6);
+  if (f.scale < need)
+    throw UsageError(fmt::format("cell numbers need cells of at least {} units for the {}-digit numbers of a {}x{} map; "
+                                 "this map is drawn at {} units a cell",
+                                 num(need), longest.size(), g.width(), g.height(), num(f.scale)));
+  std::string b = "<g class=\"cell-numbers\" fill=\"#666666\">\n";
+  for (std::int64_t y = 0; y < g.height(); ++y)
+    for (std::int64_t x = 0; x < g.width(); ++x) {
+      const grid::Cell c{x, y};
+      if ((start && *start == c) || (goal && *goal == c)) continue;
+      b += plot::text(f.X(static_cast<double>(x) + 0.5), f.Y(static_cast<double>(y) + 0.5) + 0.36 * kFont,
+                      std::to_string(g.index(c)), kFont, "middle", "", g.blocked(c) ? "white" : "");
+    }
+  return b + "</g>\n";
+}
+
 /// Draws the map panel into `fig` at fig.y(): the grid, obstacles, grid lines, cell labels, paths
 /// and endpoints; then the legend.
 void map_panel(plot::Figure& fig, const grid::Grid& g, std::optional<grid::Cell> start,
-               std::optional<grid::Cell> goal, const std::vector<PathLayer>& paths, const std::string& title) {
+               std::optional<grid::Cell> goal, const std::vector<PathLayer>& paths, const std::string& title,
+               bool cell_numbers) {
   require(!start || g.in_bounds(*start), "svg_map: start outside the grid");
   require(!goal || g.in_bounds(*goal), "svg_map: goal outside the grid");
   for (const auto& layer : paths) {
@@ -79,6 +103,7 @@ void map_panel(plot::Figure& fig, const grid::Grid& g, std::optional<grid::Cell>
       b += plot::text(f.left - 4.0, f.Y(static_cast<double>(y) + 0.5) + 0.36 * kFont, std::to_string(y), kFont, "end");
     b += "</g>\n";
   }
+  if (cell_numbers) b += cell_number_labels(g, f, start, goal);
   const double stroke_w = std::clamp(s / 8.0, 1.5, 4.0);
   std::vector<plot::LegendEntry> legend;
   for (std::size_t i = 0; i < paths.size(); ++i) {
@@ -314,18 +339,18 @@ std::string svg_line_chart(const std::vector<Series>& series, const ChartOptions
 }
 
 std::string svg_map(const grid::Grid& g, std::optional<grid::Cell> start, std::optional<grid::Cell> goal,
-                    const std::vector<PathLayer>& paths, const std::string& title) {
+                    const std::vector<PathLayer>& paths, const std::string& title, bool cell_numbers) {
   plot::Figure fig;
-  map_panel(fig, g, start, goal, paths, title);
+  map_panel(fig, g, start, goal, paths, title, cell_numbers);
   return fig.svg();
 }
 
 std::string svg_map_and_chart(const grid::Grid& g, std::optional<grid::Cell> start,
                               std::optional<grid::Cell> goal, const std::vector<PathLayer>& paths,
                               const std::string& map_title, const std::vector<Series>& series,
-                              const ChartOptions& chart) {
+                              const ChartOptions& chart, bool cell_numbers) {
   plot::Figure fig;
-  map_panel(fig, g, start, goal, paths, map_title);
+  map_panel(fig, g, start, goal, paths, map_title, cell_numbers);
   fig.skip(12.0);
   chart_panel(fig, series, chart);
   return fig.svg();

@@ -86,10 +86,14 @@ struct PathLayer {
 /// <polyline class="path"> through cell centres (Okabe–Ito colour and dash pattern per path), the
 /// title above and a legend (<g class="legend">) below with one entry per path label plus
 /// "start"/"goal"/"obstacle".
+/// With `cell_numbers` (figures.cell-numbers, as Shi's Fig. 1A), every cell but the start and the
+/// goal also shows its number i = y·W + x (rule grid.index) in grey; UsageError when the map's cells
+/// are too small for the longest number at the minimum font size (the message names the limit).
 /// Pre: start/goal, when given, and every path cell are in bounds (DomainError).
 [[nodiscard]] std::string svg_map(const grid::Grid& g, std::optional<grid::Cell> start,
                                   std::optional<grid::Cell> goal,
-                                  const std::vector<PathLayer>& paths, const std::string& title);
+                                  const std::vector<PathLayer>& paths, const std::string& title,
+                                  bool cell_numbers = false);
 
 /// Map (top) and convergence chart (below) in one column-wide figure, as `pathref plan --svg`
 /// writes for iterative planners. Both panels have the same content as svg_map / svg_line_chart,
@@ -99,7 +103,7 @@ struct PathLayer {
                                             const std::vector<PathLayer>& paths,
                                             const std::string& map_title,
                                             const std::vector<Series>& series,
-                                            const ChartOptions& chart);
+                                            const ChartOptions& chart, bool cell_numbers = false);
 
 /// Escapes & < > " ' for XML text and attribute values.
 [[nodiscard]] std::string xml_escape(std::string_view text);
