@@ -4,7 +4,6 @@
 
 #include <cmath>
 #include <limits>
-#include <regex>
 #include <string>
 #include <vector>
 
@@ -15,21 +14,43 @@ namespace io = pathref::io;
 namespace plot = pathref::io::plot;
 
 namespace {
+// Plain string scanning, no std::regex: g++ 12 reports a false -Wmaybe-uninitialized inside
+// <regex> under the sanitizer build's -O1, and -Werror makes that a build failure.
+
 /// Every value of attribute `name` in `svg`, in document order.
 std::vector<std::string> attr_values(const std::string& svg, const std::string& name) {
   std::vector<std::string> out;
-  const std::regex re(" " + name + "=\"([^\"]*)\"");
-  for (auto it = std::sregex_iterator(svg.begin(), svg.end(), re); it != std::sregex_iterator(); ++it)
-    out.push_back((*it)[1]);
+  const std::string key = " " + name + "=\"";
+  for (auto at = svg.find(key); at != std::string::npos; at = svg.find(key, at + 1)) {
+    const auto begin = at + key.size();
+    const auto end = svg.find('"', begin);
+    if (end == std::string::npos) break;
+    out.push_back(svg.substr(begin, end - begin));
+  }
   return out;
 }
-/// The text of every <text class="CLS"> element.
+/// The text of every <text class="CLS" ...>TEXT</text> element (TEXT without '<').
 std::vector<std::string> texts_of(const std::string& svg, const std::string& cls) {
   std::vector<std::string> out;
-  const std::regex re("<text class=\"" + cls + "\"[^>]*>([^<]*)</text>");
-  for (auto it = std::sregex_iterator(svg.begin(), svg.end(), re); it != std::sregex_iterator(); ++it)
-    out.push_back((*it)[1]);
+  const std::string open = "<text class=\"" + cls + "\"";
+  for (auto at = svg.find(open); at != std::string::npos; at = svg.find(open, at + 1)) {
+    const auto gt = svg.find('>', at);
+    if (gt == std::string::npos) break;
+    const auto lt = svg.find('<', gt);
+    if (lt == std::string::npos || svg.compare(lt, 7, "</text>") != 0) continue;
+    out.push_back(svg.substr(gt + 1, lt - gt - 1));
+  }
   return out;
+}
+/// The value of attribute `name` of the element whose opening tag contains position `at` (the
+/// attribute must lie between `at` and the tag's '>'); "" when it is not there.
+std::string attr_of_element(const std::string& svg, std::size_t at, const std::string& name) {
+  const auto end = svg.find('>', at);
+  const std::string key = " " + name + "=\"";
+  const auto p = svg.find(key, at);
+  if (p == std::string::npos || end == std::string::npos || p > end) return "";
+  const auto begin = p + key.size();
+  return svg.substr(begin, svg.find('"', begin) - begin);
 }
 }  // namespace
 
@@ -82,7 +103,7 @@ TEST_CASE("figures.font, figures.text: viewBox, font stack, no text below 7 pt a
   }
 }
 
-TEST_CASE("figures.absent, figures.legend: absent series say why; the legend is below the data", "[figures]") {
+TEST_CASE("figures.absent, figures.legend: absent series say why, the legend is below the data", "[figures]") {
   const double inf = std::numeric_limits<double>::infinity();
   io::Series ga{"GA", {1, 2}, {inf, inf}};
   ga.absent = "no feasible run";
@@ -91,14 +112,19 @@ TEST_CASE("figures.absent, figures.legend: absent series say why; the legend is 
   CHECK(svg.find(">IHA</text>") != std::string::npos);
   CHECK(svg.find("data-label=\"GA\"") == std::string::npos);  // nothing drawn for GA
   // The legend starts below the plot area and the x label.
-  std::smatch m;
-  REQUIRE(std::regex_search(svg, m, std::regex("class=\"plot-area\" x=\"[^\"]*\" y=\"([^\"]*)\" width=\"[^\"]*\" height=\"([^\"]*)\"")));
-  const double bottom = std::stod(m[1]) + std::stod(m[2]);
+  const auto area_at = svg.find("class=\"plot-area\" x=\"");
+  REQUIRE(area_at != std::string::npos);
+  const std::string area_y = attr_of_element(svg, area_at, "y"), area_h = attr_of_element(svg, area_at, "height");
+  REQUIRE(!area_y.empty());
+  REQUIRE(!area_h.empty());
+  const double bottom = std::stod(area_y) + std::stod(area_h);
   const auto legend_at = svg.find("<g class=\"legend\">");
   REQUIRE(legend_at != std::string::npos);
-  const std::string legend = svg.substr(legend_at);
-  REQUIRE(std::regex_search(legend, m, std::regex("<text x=\"[^\"]*\" y=\"([^\"]*)\"")));
-  CHECK(std::stod(m[1]) > bottom + 14.0);
+  const auto first_text = svg.find("<text x=\"", legend_at);
+  REQUIRE(first_text != std::string::npos);
+  const std::string legend_y = attr_of_element(svg, first_text, "y");
+  REQUIRE(!legend_y.empty());
+  CHECK(std::stod(legend_y) > bottom + 14.0);
   // A break in a line gets the caption that explains it.
   io::ChartOptions opt{"t", "x", "y"};
   opt.gap_note = "some run had no path yet";
