@@ -152,11 +152,14 @@ def replay(algo, inp):
     han = algo == "iaco-han"
     out = {"found": True, "path": [list(S)], "length": 0.0, "iterations": 0, "best_per_iteration": [],
            "mean_per_iteration": [], "best_iteration": 0, "dead_ants_per_iteration": [],
-           "rho_per_iteration": [], "draws": 0, "iteration_best": []}
+           "rho_per_iteration": [], "draws": 0}
+    if S == E:
+        # spec/shi2022-aco.md, Golden adapters: iteration_best is absent when start = goal
+        # (step 1 returns "no curves"); the per-iteration extras (q0 for Han) are absent too.
+        return out
+    out["iteration_best"] = []
     if han:
         out["q0_per_iteration"] = []
-    if S == E:
-        return out
 
     rng = MT19937(seed)
     draws = 0
