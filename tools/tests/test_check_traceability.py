@@ -144,11 +144,41 @@ class TestTraceability(unittest.TestCase):
 
     def test_test_name_unknown(self):
         self.repo.index["rules"][0]["tests"].append("demo.a: missing")
-        self.assertGap("no TEST_CASE named 'demo.a: missing' under tests/")
+        self.assertGap("no TEST_CASE or ctest add_test named 'demo.a: missing' under tests/")
+
+    def test_ctest_add_test_name_accepted(self):
+        self.repo.index["rules"][0]["tests"] = ["oracle.demo-replay", "demo.quoted name", "demo.a: works"]
+        self.repo.files["tests/CMakeLists.txt"] = (
+            "# add_test(NAME demo.commented-out COMMAND x)\n"
+            "add_test(NAME oracle.demo-replay\n         COMMAND python3 replay.py $<TARGET_FILE:pathref_cli>)\n"
+            "add_test( NAME \"demo.quoted name\" COMMAND true)\n")
+        rc, out = self.repo.build().run()
+        self.assertEqual(rc, 0, out)
+
+    def test_ctest_names_from_subdirectory_and_top_level(self):
+        self.repo.index["rules"][0]["tests"] = ["demo.sub", "demo.top"]
+        self.repo.files["tests/sub/CMakeLists.txt"] = "add_test(NAME demo.sub COMMAND true)\n"
+        self.repo.files["CMakeLists.txt"] = "add_test(NAME demo.top COMMAND true)\n"
+        rc, out = self.repo.build().run()
+        self.assertEqual(rc, 0, out)
+
+    def test_ctest_name_commented_out_or_generated_is_unknown(self):
+        self.repo.index["rules"][0]["tests"] = ["demo.commented-out", "cli.${name}", "cli.demo"]
+        self.repo.files["tests/CMakeLists.txt"] = (
+            "# add_test(NAME demo.commented-out COMMAND x)\n"
+            "foreach(name demo)\n  add_test(NAME cli.${name} COMMAND true)\nendforeach()\n")
+        self.assertGap("no TEST_CASE or ctest add_test named 'demo.commented-out'",
+                       "named 'cli.${name}'", "named 'cli.demo'")
+
+    def test_ctest_name_outside_cmake_files_is_unknown(self):
+        self.repo.index["rules"][0]["tests"] = ["demo.elsewhere"]
+        self.repo.files["tests/notes.txt"] = "add_test(NAME demo.elsewhere COMMAND true)\n"
+        self.repo.files["tools/CMakeLists.txt"] = "add_test(NAME demo.elsewhere COMMAND true)\n"
+        self.assertGap("named 'demo.elsewhere'")
 
     def test_test_names_must_be_exact(self):
         self.repo.index["rules"][0]["tests"] = ["demo.a: work"]
-        self.assertGap("no TEST_CASE named 'demo.a: work'")
+        self.assertGap("no TEST_CASE or ctest add_test named 'demo.a: work'")
 
     def test_no_tests_listed(self):
         self.repo.index["rules"][0]["tests"] = []
