@@ -45,6 +45,11 @@ SEED_SHIFT = 1000  # golden seeds are small (<= 100); seed + 1000 and seed + 200
 #   swap      start and goal swapped (unseeded searches)
 #   reverse   the per-run lists reversed (a backward-pass case becomes a forward-pass one)
 #   scale     lengths halved and the corner speed doubled (the acceleration limits bind)
+# What the variants are for, beyond new seeds (each checked on 2026-12-03 by applying the
+# tools/mutate.d/catalogue.json mutant to the crosscheck's own copy of the rule: the replay fails):
+# `reverse`/`scale` make the forward pass of drive.corner-speeds bind (drive.corner-speeds.forward);
+# `swap`/`mirror` give han.plan.astar equal-g ties resolved differently (han.plan.astar.parent);
+# `seed2` adds corridors with a draw at k = rx (han.maps.random.corridor).
 NOT_TC1 = set(range(2, 100))  # tc 1 runs the default colony size: 0.7 s in Python per run
 PLAN = {
     "shi2022.plan.aco": ("shi2022-aco", ("seed", "mirror"), NOT_TC1),
@@ -67,7 +72,7 @@ PLAN = {
     "sensors2023.plan.astar-kinematic": ("sensors2023", ("swap", "mirror"), None),
 }
 MIN_PER_RULE = 2
-MIN_RUNS = 150  # measured 2026-12-03: see the summary line; a drop below this is a failure
+MIN_RUNS = 150  # 187 compared on 2026-12-03 (6 variants equal a golden input, 2 rejected by both)
 
 
 def mirrored(inp):
