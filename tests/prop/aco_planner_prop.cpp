@@ -114,12 +114,13 @@ bool reachable(const Grid& g, Cell s, Cell t, CornerPolicy p) {
 }  // namespace
 
 TEST_CASE("prop_aco_paths_valid_and_not_shorter_than_dijkstra", "[aco][prop]") {
-  rc::prop("found paths are valid, simple, length == metrics.length, >= the Dijkstra optimum", [] {
+  pathref::testing::Reach found;
+  rc::prop("found paths are valid, simple, length == metrics.length, >= the Dijkstra optimum", [&found] {
     const Scenario sc = gen_scenario();
     const planners::Result r = plan(sc, sc.algo, sc.params);
     const bool reach = reachable(sc.g, sc.start, sc.goal, sc.policy);
     if (!reach) RC_ASSERT(!r.found);
-    if (!r.found) {
+    if (!found.hit(r.found)) {
       RC_ASSERT(r.path.empty());
       return;
     }
@@ -134,6 +135,7 @@ TEST_CASE("prop_aco_paths_valid_and_not_shorter_than_dijkstra", "[aco][prop]") {
     const auto o = search::step_counts(d.path);
     RC_ASSERT(ge_exact(a.orthogonal, a.diagonal, o.orthogonal, o.diagonal));
   });
+  pathref::testing::require_reach(found, 0.7, "found paths checked against Dijkstra");
 }
 
 TEST_CASE("prop_aco_same_seed_same_run", "[aco][prop]") {
@@ -156,10 +158,12 @@ TEST_CASE("prop_aco_same_seed_same_run", "[aco][prop]") {
 }
 
 TEST_CASE("prop_aco_best_curve_non_increasing", "[aco][prop]") {
-  rc::prop("best_per_iteration is non-increasing, ends at the returned length, N entries", [] {
-    const Scenario sc = gen_scenario();
+  pathref::testing::Reach reach;
+  rc::prop("best_per_iteration is non-increasing, ends at the returned length, N entries", [&reach] {
+    Scenario sc = gen_scenario();
+    distinct_ends(sc);
     const planners::Result r = plan(sc, sc.algo, sc.params);
-    if (sc.start == sc.goal) return;
+    if (!reach.hit(!(sc.start == sc.goal))) return;
     const auto& b = r.best_per_iteration;
     RC_ASSERT(static_cast<std::int64_t>(b.size()) == sc.params.at("iterations").get<std::int64_t>());
     for (std::size_t i = 1; i < b.size(); ++i) RC_ASSERT(b[i] <= b[i - 1]);
@@ -178,18 +182,22 @@ TEST_CASE("prop_aco_best_curve_non_increasing", "[aco][prop]") {
       for (const double v : b) RC_ASSERT(std::isinf(v));
     }
   });
+  pathref::testing::require_reach(reach, 0.5, "best curve, start != goal");
 }
 
 TEST_CASE("prop_backtracking_ants_never_die_when_goal_reachable", "[aco][prop]") {
-  rc::prop("dead_end = backtrack: a tour is a depth-first search, so it reaches a reachable goal", [] {
+  pathref::testing::Reach counted;
+  rc::prop("dead_end = backtrack: a tour is a depth-first search, so it reaches a reachable goal", [&counted] {
     Scenario sc = gen_scenario();
+    distinct_ends(sc);
     sc.params["dead_end"] = "backtrack";
     const planners::Result r = plan(sc, sc.algo, sc.params);
-    if (sc.start == sc.goal) return;
+    if (!counted.hit(!(sc.start == sc.goal))) return;
     const bool reach = reachable(sc.g, sc.start, sc.goal, sc.policy);
     for (const auto& d : r.extra.at("dead_ants_per_iteration"))
       RC_ASSERT(d.get<std::int64_t>() == (reach ? 0 : sc.params.at("ants").get<std::int64_t>()));
   });
+  pathref::testing::require_reach(counted, 0.5, "dead ants counted, start != goal");
 }
 
 TEST_CASE("prop_iaco_shi_rho_follows_eq13", "[aco][prop]") {
@@ -248,8 +256,10 @@ TEST_CASE("prop_iaco_han_q0_and_rho_follow_eq5_eq7", "[aco][prop]") {
 }
 
 TEST_CASE("prop_distinct_paths_are_valid_and_contain_the_best", "[aco][prop]") {
-  rc::prop("ant_colony::run: distinct surviving paths, valid, counts sum to the survivors", [] {
-    const Scenario sc = gen_scenario();
+  pathref::testing::Reach reach;
+  rc::prop("ant_colony::run: distinct surviving paths, valid, counts sum to the survivors", [&reach] {
+    Scenario sc = gen_scenario();
+    distinct_ends(sc);
     planners::Request req;
     req.grid = &sc.g;
     req.start = sc.start;
@@ -260,7 +270,7 @@ TEST_CASE("prop_distinct_paths_are_valid_and_contain_the_best", "[aco][prop]") {
     cfg.iterations = sc.params.at("iterations").get<std::int64_t>();
     rng::Stream stream(sc.seed);
     const ant_colony::Run run = ant_colony::run(req, cfg, stream);
-    if (sc.start == sc.goal) return;
+    if (!reach.hit(!(sc.start == sc.goal))) return;
     std::int64_t survivors = 0;
     for (const auto& d : run.result.extra.at("dead_ants_per_iteration"))
       survivors += cfg.ants - d.get<std::int64_t>();
@@ -281,10 +291,12 @@ TEST_CASE("prop_distinct_paths_are_valid_and_contain_the_best", "[aco][prop]") {
     RC_ASSERT(has_best == run.result.found);
     RC_ASSERT(stream.doubles_drawn() == run.result.extra.at("draws").get<std::uint64_t>());
   });
+  pathref::testing::require_reach(reach, 0.45, "distinct paths, start != goal");
 }
 
 TEST_CASE("prop_astar_han_equals_dijkstra", "[aco][prop]") {
-  rc::prop("astar-han (Chebyshev, admissible under every policy) finds Dijkstra's cost", [] {
+  pathref::testing::Reach found;
+  rc::prop("astar-han (Chebyshev, admissible under every policy) finds Dijkstra's cost", [&found] {
     Scenario sc;
     sc.g = *testing::gen_grid(14, 14, 0.5);
     const auto n = sc.g.cell_count();
@@ -296,8 +308,9 @@ TEST_CASE("prop_astar_han_equals_dijkstra", "[aco][prop]") {
     const planners::Result a = plan(sc, "astar-han", planners::Json::object());
     const search::Outcome d = search::dijkstra(sc.g, sc.start, sc.goal, sc.policy);
     RC_ASSERT(a.found == d.found);
-    if (!a.found) return;
+    if (!found.hit(a.found)) return;
     RC_ASSERT(metrics::validate_path(sc.g, a.path, sc.start, sc.goal, sc.policy).valid);
     RC_ASSERT(search::step_counts(a.path) == search::step_counts(d.path));
   });
+  pathref::testing::require_reach(found, 0.7, "astar-han paths found");
 }

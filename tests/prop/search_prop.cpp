@@ -114,12 +114,13 @@ TEST_CASE("prop_astar_length_equals_dijkstra", "[search][prop]") {
 }
 
 TEST_CASE("prop_paths_valid_under_policy", "[search][prop]") {
-  rc::prop("every found path passes metrics.valid-path; length == metrics.length bit for bit", [] {
+  pathref::testing::Reach found;
+  rc::prop("every found path passes metrics.valid-path; length == metrics.length bit for bit", [&found] {
     const Scenario sc = gen_scenario();
     const auto h = *rc::gen::element(Heuristic::zero, Heuristic::manhattan, Heuristic::chebyshev,
                                      Heuristic::octile, Heuristic::euclidean);
     const auto r = search::astar(sc.g, sc.start, sc.goal, sc.policy, h);
-    if (!r.found) {
+    if (!found.hit(r.found)) {
       RC_ASSERT(r.path.empty());
       RC_ASSERT(r.length == 0.0);
       return;
@@ -128,6 +129,7 @@ TEST_CASE("prop_paths_valid_under_policy", "[search][prop]") {
     RC_ASSERT(check.valid);
     RC_ASSERT(r.length == metrics::path_length(r.path));
   });
+  pathref::testing::require_reach(found, 0.7, "found paths validated");
 }
 
 TEST_CASE("prop_astar_expands_no_more_than_dijkstra", "[search][prop]") {
@@ -190,12 +192,13 @@ TEST_CASE("prop_dijkstra_is_astar_with_zero_heuristic", "[search][prop]") {
 }
 
 TEST_CASE("prop_manhattan_within_sqrt2_of_shortest", "[search][prop]") {
-  rc::prop("A*-manhattan under any policy: exact cost <= sqrt2 * shortest (guarantee 4)", [] {
+  pathref::testing::Reach found;
+  rc::prop("A*-manhattan under any policy: exact cost <= sqrt2 * shortest (guarantee 4)", [&found] {
     const Scenario sc = gen_scenario();
     const auto d = search::dijkstra(sc.g, sc.start, sc.goal, sc.policy);
     const auto m = search::astar(sc.g, sc.start, sc.goal, sc.policy, Heuristic::manhattan);
     RC_ASSERT(m.found == d.found);
-    if (!d.found) return;
+    if (!found.hit(d.found)) return;
     const auto ms = search::step_counts(m.path);
     const auto ds = search::step_counts(d.path);
     // a + b sqrt2 <= sqrt2 (a' + b' sqrt2) = 2b' + a' sqrt2  <=>  a - 2b' <= (a' - b) sqrt2
@@ -203,6 +206,7 @@ TEST_CASE("prop_manhattan_within_sqrt2_of_shortest", "[search][prop]") {
     // and never shorter than the shortest: a' + b' sqrt2 <= a + b sqrt2
     RC_ASSERT(le_q_sqrt2(ds.orthogonal - ms.orthogonal, ms.diagonal - ds.diagonal));
   });
+  pathref::testing::require_reach(found, 0.7, "goals found, costs compared");
 }
 
 TEST_CASE("prop_heuristic_lower_bound_and_consistency", "[search][prop]") {

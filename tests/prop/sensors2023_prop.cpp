@@ -14,6 +14,7 @@
 #include "pathref/planners/astar_kinematic.hpp"
 #include "pathref/planners/search.hpp"
 #include "support/generators.hpp"
+#include "support/reach.hpp"
 
 using pathref::grid::Cell;
 using pathref::grid::Grid;
@@ -106,8 +107,9 @@ TEST_CASE("prop_sensors2023_segment_blocked_matches_dense_sampling") {
 }
 
 TEST_CASE("prop_sensors2023_planner_invariants") {
+  pathref::testing::Reach found;
   rc::prop("found iff reachable; key nodes are a subsequence with the same ends; shortcuts pass "
-           "their tests; the curve starts and ends at the end centres", [] {
+           "their tests; the curve starts and ends at the end centres", [&found] {
     const auto sc = draw_scene(14, 14, 0.3);
     const auto policy = *pathref::testing::gen_policy();
     s23::KinematicOptions o;
@@ -121,7 +123,7 @@ TEST_CASE("prop_sensors2023_planner_invariants") {
     const auto d = pathref::search::dijkstra(sc.g, sc.start, sc.goal, policy);
     RC_ASSERT(r.search.found == d.found);
     RC_CLASSIFY(r.fallback_used, "fallback");
-    if (!r.search.found) return;
+    if (!found.hit(r.search.found)) return;
     RC_ASSERT(pathref::metrics::validate_path(sc.g, r.search.path, sc.start, sc.goal, policy).valid);
     RC_ASSERT(r.search.length >= d.length - 1e-9);  // the weighted search is not shorter
     const auto& raw = r.search.path;
@@ -156,6 +158,7 @@ TEST_CASE("prop_sensors2023_planner_invariants") {
     RC_ASSERT(std::abs(p.back().y - cx(sc.goal.y)) <= 1e-12);
     RC_ASSERT(r.clearance.lower <= r.clearance.upper);
   });
+  pathref::testing::require_reach(found, 0.7, "paths found, key nodes and curve checked");
 }
 
 TEST_CASE("prop_sensors2023_five_directions_generate_no_more_children_per_expansion") {

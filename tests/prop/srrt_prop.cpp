@@ -16,6 +16,7 @@
 #include "pathref/geometry/obstacles.hpp"
 #include "pathref/geometry/scene.hpp"
 #include "pathref/rng/mt19937.hpp"
+#include "support/reach.hpp"
 
 using namespace pathref;
 using namespace pathref::continuous;
@@ -163,7 +164,8 @@ TEST_CASE("prop_steer_step_and_direction") {
 }
 
 TEST_CASE("prop_rrt_tree_valid_and_shortcut_never_longer") {
-  rc::prop("every tree edge is free and <= delta; Algorithm 2 keeps 0..m, free, never longer", [] {
+  pathref::testing::Reach found;
+  rc::prop("every tree edge is free and <= delta; Algorithm 2 keeps 0..m, free, never longer", [&found] {
     const RectScene rs = *gen_rect_scene(5);
     const ObstacleMap m = ObstacleMap::from_scene(to_scene(rs));
     const Vec2 s = *gen_point(), g = *gen_point();
@@ -187,7 +189,7 @@ TEST_CASE("prop_rrt_tree_valid_and_shortcut_never_longer") {
     rng::Stream st2(seed);
     RC_ASSERT(rrt(m, s, g, p, st2).nodes == r.nodes);  // deterministic
     RC_TAG(r.found ? "found" : "not found");
-    if (!r.found) return;
+    if (!found.hit(r.found)) return;
     RC_ASSERT(r.nodes[r.path.back()] == g);
     std::vector<Vec2> raw;
     for (const auto k : r.path) raw.push_back(r.nodes[k]);
@@ -202,4 +204,5 @@ TEST_CASE("prop_rrt_tree_valid_and_shortcut_never_longer") {
     }
     RC_ASSERT(polyline_length(out) <= polyline_length(raw) * (1.0 + 1e-12));
   });
+  pathref::testing::require_reach(found, 0.7, "RRT found the goal, Algorithm 2 checked");
 }
