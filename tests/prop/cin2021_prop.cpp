@@ -259,8 +259,12 @@ TEST_CASE("prop_cin_planners_valid_paths", "[cin2021][prop]") {
     if (!found.hit(r.found)) return;
     RC_ASSERT(metrics::validate_path(sc.g, r.path, sc.start, sc.goal, sc.policy).valid);
     RC_ASSERT(r.length == metrics::path_length(r.path));
+    // Only aco-cin's curve is a best-so-far length. ga-cin records the length of the fittest
+    // individual ever seen (cin2021.plan.ga step 3d): f = a f1 + b f2 can rise with a longer but
+    // smoother path, so that curve may go up (seen: two paths of length 1 + 2 sqrt2 summed in
+    // another order, 1 ulp apart, seed 6006415319821040567); hga-aco-cin joins two phases.
     for (std::size_t i = 1; i < r.best_per_iteration.size(); ++i)
-      if (algo != "hga-aco-cin") RC_ASSERT(r.best_per_iteration[i] <= r.best_per_iteration[i - 1]);
+      if (algo == "aco-cin") RC_ASSERT(r.best_per_iteration[i] <= r.best_per_iteration[i - 1]);
   });
   pathref::testing::require_reach(found, 0.7, "found paths checked");
 }
