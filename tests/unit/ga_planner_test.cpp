@@ -12,11 +12,13 @@
 #include "pathref/core/error.hpp"
 #include "pathref/equations/ga_operators.hpp"
 #include "pathref/equations/metrics.hpp"
+#include "pathref/grid/json_codec.hpp"
 #include "pathref/io/builtin_maps.hpp"
 #include "pathref/planners/genetic.hpp"
 #include "pathref/planners/hybrid.hpp"
 #include "pathref/planners/planner.hpp"
 #include "pathref/planners/search.hpp"
+#include "pathref/rules/registry.hpp"
 
 using namespace pathref;
 using grid::Cell;
@@ -226,7 +228,7 @@ TEST_CASE("shi2022.plan.ga: an unreachable goal reports the failure, not a crash
   CHECK(q.extra.at("init_chains") == 20);
 }
 
-TEST_CASE("shi2022.plan.iga: weighted fitness and adaptive probabilities; IGA* has no cap") {
+TEST_CASE("shi2022.plan.iga: weighted fitness and adaptive probabilities - IGA* has no cap") {
   const io::MapFile m = io::load_builtin_map(*io::find_builtin_map("shi6x6"));
   const planners::Result r = plan("iga-shi", m.grid, Cell{0, 0}, Cell{5, 5}, 11, small_ga);
   REQUIRE(r.found);
@@ -237,9 +239,33 @@ TEST_CASE("shi2022.plan.iga: weighted fitness and adaptive probabilities; IGA* h
   const planners::Result s = plan("iga-shi-nomax", m.grid, Cell{0, 0}, Cell{5, 5}, 11, small_ga);
   REQUIRE(s.found);
   CHECK(s.params_used.at("pm_max") == 1.0);
-  // The reported best has the largest fitness: its fitness is recomputable from the spec.
-  const genetic::Config c = genetic::shi_iga();
-  CHECK(r.extra.at("best_fitness").get<double>() == genetic::fitness_of(m.grid, r.path, c));
+  // The reported best fitness is Eq. 14 written out, ((a fit1) + (b fit2)) + (c fit3) with
+  // Table 1's a = 5, b = 4, c = 1, over the factors of Eq. 15, 16 and 18 evaluated by their own
+  // rules under the readings the run reports (not through the planner's fitness function).
+  const planners::Json& u = r.params_used;
+  CHECK(u.at("a").get<double>() == 5.0);
+  CHECK(u.at("b").get<double>() == 4.0);
+  CHECK(u.at("c").get<double>() == 1.0);
+  planners::Json path = planners::Json::array();
+  for (const Cell& cell : r.path) path.push_back({cell.x, cell.y});
+  const rules::Registry& reg = rules::registry();
+  const double fit1 = 1.0 / metrics::path_length(r.path);
+  const double fit2 = reg.find("shi2022.eq16")
+                          ->eval({{"path", path}, {"penalties", u.at("penalties")}, {"smoothness", u.at("smoothness")}})
+                          .at("fit2")
+                          .get<double>();
+  const double fit3 = reg.find("shi2022.eq18")
+                          ->eval({{"grid", grid::grid_to_json(m.grid)},
+                                  {"path", path},
+                                  {"safety_aggregate", u.at("safety_aggregate")},
+                                  {"safety_count", u.at("safety_count")},
+                                  {"safe_node", u.at("safe_node")},
+                                  {"safety_nodes", u.at("safety_nodes")},
+                                  {"outside", u.at("outside")}})
+                          .at("fit3")
+                          .get<double>();
+  CHECK(fit2 != fit3);  // otherwise swapping the two factors would go unnoticed
+  CHECK(r.extra.at("best_fitness").get<double>() == ((5.0 * fit1) + (4.0 * fit2)) + (1.0 * fit3));
 }
 
 TEST_CASE("shi2022.plan.hybrid: colony then GA, curves of both phases, phase reported") {

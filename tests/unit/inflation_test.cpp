@@ -75,7 +75,7 @@ TEST_CASE("inflation.decimal: numbers are read exactly from their text", "[infla
   CHECK(to_string(*decimal_from_double_shortest(0.3)) == "0.3");
 }
 
-TEST_CASE("inflation.cell-blocked: tie cells at distance exactly r are blocked; binary64 gets them wrong",
+TEST_CASE("inflation.cell-blocked: tie cells at distance exactly r are blocked - binary64 gets them wrong",
           "[inflation]") {
   // r = 0.3 = 3/10 exactly; the vertex (1.7, 1.5) is at distance exactly 3/10 from the cell
   // [2,3] x [1,2] (tests/data/scenes/ties.json).

@@ -33,7 +33,7 @@ std::string matrix_error(const std::string& text, const ReadLimits& limits = {})
 
 }  // namespace
 
-TEST_CASE("matrix: plain rows and MATLAB forms read the same grid; first row is the top", "[matrix]") {
+TEST_CASE("matrix: plain rows and MATLAB forms read the same grid - first row is the top", "[matrix]") {
   const Grid want = Grid::from_rows_top_first({"..#", "#.."});
   CHECK(parse_matrix("0 0 1\n1 0 0\n", "a").grid == want);
   CHECK(parse_matrix("% map\n\n  0\t0  1 \n1,0 , 0 % trailing\n\n", "b").grid == want);

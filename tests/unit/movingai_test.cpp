@@ -51,7 +51,7 @@ const std::string sample_map =
 
 }  // namespace
 
-TEST_CASE("movingai: the example map parses; first row is the top, (0,0) upper left -> lower left",
+TEST_CASE("movingai: the example map parses - first row is the top, (0,0) upper left -> lower left",
           "[movingai]") {
   const MapFile m = parse_movingai_map(sample_map, "m.map");
   CHECK(m.grid.width() == 5);

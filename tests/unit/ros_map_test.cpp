@@ -343,7 +343,7 @@ TEST_CASE("pgm: catalogue of malformed images with exact messages", "[ros_map]")
   }
 }
 
-TEST_CASE("ros-map: raw mode needs maxval 255; file errors point at the YAML", "[ros_map]") {
+TEST_CASE("ros-map: raw mode needs maxval 255 - file errors point at the YAML", "[ros_map]") {
   const std::string yaml = kValid + "mode: raw\n";
   try {
     (void)parse_ros_map(yaml, "m.yaml", "P2\n1 1\n100\n50\n", "m.pgm");

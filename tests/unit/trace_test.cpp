@@ -17,7 +17,7 @@
 
 using namespace pathref;
 
-TEST_CASE("trace: a traced stream records index, value, purpose and context; values unchanged", "[rng][trace]") {
+TEST_CASE("trace: a traced stream records index, value, purpose and context - values unchanged", "[rng][trace]") {
   rng::Stream plain(42), traced(42);
   rng::Trace t;
   traced.set_trace(&t);
