@@ -3,7 +3,8 @@
 // function under test or the function a rule wraps. tools/mutate's catalogue names the mutants
 // these cases kill (docs/testing.md).
 // spec: han.collision.classify, han.eq3, han.eq4, han.eq5, han.eq7, shi2022.eq13, rng.roulette,
-// mecanum.ik, mecanum.fk, shi2022.plan.ga, sensors2023.eq1, han.eq1
+// mecanum.ik, mecanum.fk, shi2022.plan.ga, sensors2023.eq1, han.eq1, cin2021.eq24, han.sim.detour,
+// han.sim.evade
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -14,6 +15,7 @@
 
 #include "pathref/equations/aco.hpp"
 #include "pathref/equations/aco_adaptive.hpp"
+#include "pathref/equations/cin2021.hpp"
 #include "pathref/equations/corner.hpp"
 #include "pathref/equations/pseudo_random.hpp"
 #include "pathref/equations/sensors2023.hpp"
@@ -192,4 +194,54 @@ TEST_CASE("han.eq1: the corner factor multiplies the weight, by hand") {
   const std::vector<double> w2 = aco::transition_weights(tau, eta, 1.0, 2.0, aco::CornerFactor{omega, 2.0});
   CHECK(w2[0] == 1.0);
   CHECK(w2[1] == 32.0);
+}
+
+TEST_CASE("cin2021.eq24: each band opens at its lower edge minus eps, exactly") {
+  // spec cin2021.eq24 with eps = 1e-3 degrees and the default penalties (c135, c90, c45) =
+  // (5, 100, 1000): theta in [180 - eps, 180 + eps] -> 0, [135 - eps, 180 - eps) -> c135,
+  // [90 - eps, 135 - eps) -> c90, below 90 - eps -> c45. At each edge the band above it applies;
+  // one double below the edge, the band below.
+  constexpr double eps = 1e-3;
+  CHECK(cin::corner_penalty(180.0 - eps) == 0.0);
+  CHECK(cin::corner_penalty(std::nextafter(180.0 - eps, 0.0)) == 5.0);
+  CHECK(cin::corner_penalty(135.0 - eps) == 5.0);
+  CHECK(cin::corner_penalty(std::nextafter(135.0 - eps, 0.0)) == 100.0);
+  CHECK(cin::corner_penalty(90.0 - eps) == 100.0);
+  CHECK(cin::corner_penalty(std::nextafter(90.0 - eps, 0.0)) == 1000.0);
+}
+
+TEST_CASE("han.sim.detour: a cell centre at exactly the reach is not swept") {
+  // reach = clearance + sqrt(2)/2 (spec han.sim.detour). With clearance = 1 - sqrt(2)/2 (exact in
+  // binary64: Sterbenz) the reach is exactly 1. The segment runs through the centres of the top
+  // row of a 3x3 map, y = 2.5: the middle row's centres (y = 1.5) are exactly 1 away and are
+  // not swept (strict <); the top row is (distance 0); the bottom row is 2 away.
+  const grid::Grid g(3, 3);
+  const double s = std::sqrt(2.0) / 2.0;
+  const double clearance = 1.0 - s;
+  REQUIRE(clearance + s == 1.0);
+  const std::vector<grid::Cell> swept = sim::swept_cells(g, {0.5, 2.5}, {2.5, 2.5}, clearance);
+  CHECK(swept == std::vector<grid::Cell>{{0, 2}, {1, 2}, {2, 2}});
+  // clearance (1 + 2^-52) - sqrt(2)/2 (exact again): the reach is the next double above 1 and the
+  // middle row's centres are now inside it
+  const double wider_clearance = std::nextafter(1.0, 2.0) - s;
+  REQUIRE(wider_clearance + s == std::nextafter(1.0, 2.0));
+  const std::vector<grid::Cell> wider = sim::swept_cells(g, {0.5, 2.5}, {2.5, 2.5}, wider_clearance);
+  CHECK(wider == std::vector<grid::Cell>{{0, 1}, {1, 1}, {2, 1}, {0, 2}, {1, 2}, {2, 2}});
+}
+
+TEST_CASE("han.sim.evade: equal-cost routes keep the parent settled first") {
+  // 3x1 free map; sources (0,0) and (2,0) both with cost 1; only the middle cell (1,0) is outside
+  // the band. Both sources reach it at cost 1 + 1 = 2 (spec han.sim.evade: a parent is replaced
+  // only on a strictly smaller g). The queue pops (1, index 0) first, so the refuge path starts at
+  // source 0: [(0,0), (1,0)]; a "<=" relaxation would hand it to source 1, [(2,0), (1,0)].
+  const grid::Grid g(3, 1);
+  const std::vector<sim::RefugeSource> sources{{grid::Cell{0, 0}, 1.0}, {grid::Cell{2, 0}, 1.0}};
+  const std::vector<std::uint8_t> band{1, 0, 1};
+  for (const grid::CornerPolicy policy : {grid::CornerPolicy::never, grid::CornerPolicy::strict}) {
+    const sim::Refuge r = sim::find_refuge(g, sources, band, policy);
+    REQUIRE(r.found);
+    CHECK(r.cost == 2.0);
+    CHECK(r.source == 0);
+    CHECK(r.path == std::vector<grid::Cell>{{0, 0}, {1, 0}});
+  }
 }

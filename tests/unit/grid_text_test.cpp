@@ -193,7 +193,13 @@ TEST_CASE("grid-text: the writer refuses what the reader would reject", "[grid_t
   CHECK_THROWS_AS(to_grid_text(MapFile{g, std::nullopt, std::nullopt, "new\nline"}), pathref::DomainError);
   const Grid two = Grid::from_rows_top_first({".."});
   CHECK_THROWS_AS(to_grid_text(MapFile{two, Cell{1, 0}, Cell{1, 0}, ""}), pathref::DomainError);
-  CHECK_NOTHROW(to_grid_text(MapFile{two, Cell{0, 0}, Cell{1, 0}, "caf\xC3\xA9 # 1"}));
+  // The accepted neighbour of those cases: written, then read back unchanged.
+  const MapFile ok{two, Cell{0, 0}, Cell{1, 0}, "caf\xC3\xA9 # 1"};
+  const MapFile back = parse_grid_text(to_grid_text(ok), "roundtrip.txt");
+  CHECK(back.grid == two);
+  CHECK(back.start == ok.start);
+  CHECK(back.goal == ok.goal);
+  CHECK(back.name == ok.name);
 }
 
 TEST_CASE("grid-text: read_grid_file reads a file and names it in errors", "[grid_text]") {

@@ -16,6 +16,7 @@
 #include "pathref/equations/heuristics.hpp"
 #include "pathref/equations/pseudo_random.hpp"
 #include "pathref/equations/rls.hpp"
+#include "pathref/planners/planner.hpp"
 #include "pathref/rules/registry.hpp"
 
 using namespace pathref;
@@ -33,7 +34,10 @@ TEST_CASE("han.params: printed values and pathref's choices", "[han]") {
   CHECK(p.epsilon == 1.0);
   CHECK(p.h == 1.0);
   CHECK(p.tau_min == 0.01);
-  CHECK(p.a < p.b);
+  CHECK(p.Q == 1.0);
+  CHECK(p.tau_initial == 1.0);
+  CHECK(p.a == 1.0);
+  CHECK(p.b == 5.0);
   CHECK(p.rho_min == 0.1);
   CHECK(p.lambda == 0.95);
   CHECK(p.rls_init_samples == 2);
@@ -42,23 +46,53 @@ TEST_CASE("han.params: printed values and pathref's choices", "[han]") {
   CHECK_NOTHROW(corner::corner_heuristic(p.omega_i, 2));
 }
 
+TEST_CASE("han.params: the iaco-han planner's defaults are the printed values and the choices", "[han]") {
+  // spec han.params: the planner runs with the printed alpha, beta, rho, ants and cycles and with
+  // pathref's documented choices; the literal values here, so neither side can drift alone.
+  const planners::Planner* planner = planners::find_planner("iaco-han");
+  REQUIRE(planner != nullptr);
+  const planners::Json& d = planner->defaults;
+  CHECK(d.at("ants") == 50);
+  CHECK(d.at("iterations") == 50);
+  CHECK(d.at("alpha").get<double>() == 4.0);
+  CHECK(d.at("beta").get<double>() == 8.0);
+  CHECK(d.at("rho").get<double>() == 0.7);
+  CHECK(d.at("gamma").get<double>() == 1.0);
+  CHECK(d.at("omega_i").get<double>() == 0.5);
+  CHECK(d.at("epsilon").get<double>() == 1.0);
+  CHECK(d.at("h").get<double>() == 1.0);
+  CHECK(d.at("Q").get<double>() == 1.0);
+  CHECK(d.at("tau0").get<double>() == 1.0);
+  CHECK(d.at("tau_min").get<double>() == 0.01);
+  CHECK(d.at("a").get<double>() == 1.0);
+  CHECK(d.at("b").get<double>() == 5.0);
+  CHECK(d.at("rho_min").get<double>() == 0.1);
+}
+
 TEST_CASE("han.eq1: the rule is Shi's transition rule with the corner factor", "[han]") {
   const rules::Rule* rule = rules::registry().find("han.eq1");
   REQUIRE(rule != nullptr);
+  // By hand (spec han.eq1, w_j = tau_j^alpha eta_j^beta omega_j^gamma, p_j = w_j / sum w), powers
+  // of two so every product is exact: alpha = 4, beta = 8, gamma = 1,
+  // w = (1 * 1 * 1, 2^-4 * 2^-8 * 2^-1, 16 * 1 * 1) = (1, 2^-13, 16), sum = 17 + 2^-13 (exact).
   const std::vector<double> tau{1.0, 0.5, 2.0};
-  const std::vector<double> eta{1.0, 1.0 / std::numbers::sqrt2, 1.0};
+  const std::vector<double> eta{1.0, 0.5, 1.0};
   const std::vector<double> omega{1.0, 0.5, 1.0};
-  const auto w = aco::transition_weights(tau, eta, 4.0, 8.0, aco::CornerFactor{omega, 1.0});
-  const auto p = aco::transition_probabilities(tau, eta, 4.0, 8.0, aco::CornerFactor{omega, 1.0});
+  const double tiny = std::ldexp(1.0, -13);
+  const double w[3] = {1.0, tiny, 16.0};
+  const double sum = 17.0 + tiny;
   const rules::Json out = rule->eval(
       {{"tau", tau}, {"eta", eta}, {"omega", omega}, {"alpha", 4}, {"beta", 8}, {"gamma", 1}});
   for (std::size_t r = 0; r < 3; ++r) {
     CHECK(out.at("weights").at(r).get<double>() == w[r]);
-    CHECK(out.at("p").at(r).get<double>() == p[r]);
+    CHECK(out.at("p").at(r).get<double>() == Approx(w[r] / sum).epsilon(1e-15));
   }
-  // gamma = 0 is Shi's Eq. 2.
-  CHECK(aco::transition_weights(tau, eta, 4.0, 8.0, aco::CornerFactor{omega, 0.0}) ==
-        aco::transition_weights(tau, eta, 4.0, 8.0));
+  // gamma = 0 is Shi's Eq. 2: the middle weight loses its omega = 1/2, 2^-12.
+  const rules::Json shi = rule->eval(
+      {{"tau", tau}, {"eta", eta}, {"omega", omega}, {"alpha", 4}, {"beta", 8}, {"gamma", 0}});
+  CHECK(shi.at("weights").at(0).get<double>() == 1.0);
+  CHECK(shi.at("weights").at(1).get<double>() == std::ldexp(1.0, -12));
+  CHECK(shi.at("weights").at(2).get<double>() == 16.0);
   CHECK_THROWS_AS(rule->eval({{"tau", std::vector<double>{}}, {"eta", std::vector<double>{}},
                               {"omega", std::vector<double>{}}, {"alpha", 4}, {"beta", 8},
                               {"gamma", 1}}),
@@ -159,17 +193,22 @@ TEST_CASE("han.eq7: stepped rho with closed upper boundaries and floor", "[han]"
   CHECK(rho == 0.1);
 }
 
-TEST_CASE("han.eq8: the rule evaluates heuristics::chebyshev, admissible under every corner policy",
+TEST_CASE("han.eq8: the Chebyshev distance written out, admissible under every corner policy",
           "[han]") {
   const rules::Rule* rule = rules::registry().find("han.eq8");
   REQUIRE(rule != nullptr);
   for (std::int64_t x = -3; x <= 3; ++x)
     for (std::int64_t y = -3; y <= 3; ++y) {
       const Cell n{x, y}, g{1, -2};
-      CHECK(rule->eval({{"n", {x, y}}, {"g", {1, -2}}}).at("h").get<double>() ==
-            heuristics::chebyshev(n, g));
-      CHECK(rule->eval({{"n", {x, y}}, {"g", {1, -2}}, {"h_form", "octile"}}).at("h").get<double>() ==
-            heuristics::octile(n, g));
+      // Eq. 8 written out: h = max(|x_n - x_g|, |y_n - y_g|); the octile form
+      // (M - m) + sqrt2 * m in the order spec/search.md fixes (M, m the larger and smaller delta).
+      const std::int64_t dx = x > g.x ? x - g.x : g.x - x;
+      const std::int64_t dy = y > g.y ? y - g.y : g.y - y;
+      const std::int64_t big = dx > dy ? dx : dy, small = dx > dy ? dy : dx;
+      CHECK(rule->eval({{"n", {n.x, n.y}}, {"g", {g.x, g.y}}}).at("h").get<double>() ==
+            static_cast<double>(big));
+      CHECK(rule->eval({{"n", {n.x, n.y}}, {"g", {g.x, g.y}}, {"h_form", "octile"}}).at("h").get<double>() ==
+            static_cast<double>(big - small) + (1.4142135623730951 * static_cast<double>(small)));
     }
   for (const auto policy : {grid::CornerPolicy::never, grid::CornerPolicy::strict,
                             grid::CornerPolicy::one, grid::CornerPolicy::always}) {

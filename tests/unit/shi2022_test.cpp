@@ -14,6 +14,7 @@
 #include "pathref/equations/proportional.hpp"
 #include "pathref/equations/shi2022.hpp"
 #include "pathref/grid/coords.hpp"
+#include "pathref/planners/planner.hpp"
 #include "pathref/rules/registry.hpp"
 
 using namespace pathref;
@@ -42,6 +43,31 @@ TEST_CASE("shi2022.table1: the printed parameters", "[shi2022]") {
   CHECK(t.pm_max == 0.3);
   const ga::FitnessWeights w{};
   CHECK((w.a == t.a && w.b == t.b && w.c == t.c));
+}
+
+TEST_CASE("shi2022.table1: the IACO and IGA planners' defaults are the printed values", "[shi2022]") {
+  // spec shi2022.table1: the ant colony row (m = 50, T = 100, alpha = 1, beta = 7, Q = 1,
+  // rho(0) = 0.9, rho_min = 0.1) and the genetic row (200 individuals, M_g = 50, a = 5, b = 4,
+  // c = 1, P_m_max = 0.3), written out here so that neither side can drift alone.
+  const planners::Planner* aco = planners::find_planner("iaco-shi");
+  REQUIRE(aco != nullptr);
+  const planners::Json& a = aco->defaults;
+  CHECK(a.at("ants") == 50);
+  CHECK(a.at("iterations") == 100);
+  CHECK(a.at("alpha").get<double>() == 1.0);
+  CHECK(a.at("beta").get<double>() == 7.0);
+  CHECK(a.at("Q").get<double>() == 1.0);
+  CHECK(a.at("rho_initial").get<double>() == 0.9);
+  CHECK(a.at("rho_min").get<double>() == 0.1);
+  const planners::Planner* iga = planners::find_planner("iga-shi");
+  REQUIRE(iga != nullptr);
+  const planners::Json& g = iga->defaults;
+  CHECK(g.at("population") == 200);
+  CHECK(g.at("generations") == 50);
+  CHECK(g.at("a").get<double>() == 5.0);
+  CHECK(g.at("b").get<double>() == 4.0);
+  CHECK(g.at("c").get<double>() == 1.0);
+  CHECK(g.at("pm_max").get<double>() == 0.3);
 }
 
 TEST_CASE("shi2022.eq1: the rule evaluates grid::cell_centre with its forms", "[shi2022]") {
@@ -79,14 +105,13 @@ TEST_CASE("shi2022.eq2: weights, probabilities and the optional corner factor", 
   const auto p = aco::transition_probabilities(tau, eta, 2.0, 1.0);
   CHECK(p[0] == 0.5 / 1.0625);
   CHECK(p[1] == 0.5625 / 1.0625);
-  CHECK(p == equations::proportional_probabilities(w));
   // Han Eq. 1: an extra factor omega^gamma per candidate (2 for gentle, 1 for sharp corners).
   const std::vector<double> omega{2.0, 1.0};
   const auto wc = aco::transition_weights(tau, eta, 2.0, 1.0, aco::CornerFactor{omega, 1.0});
   CHECK(wc[0] == 1.0);
   CHECK(wc[1] == 0.5625);
   const auto wc0 = aco::transition_weights(tau, eta, 2.0, 1.0, aco::CornerFactor{omega, 0.0});
-  CHECK(wc0 == w);  // gamma = 0: omega^0 = 1, Shi's rule
+  CHECK(wc0 == std::vector<double>{0.5, 0.5625});  // gamma = 0: omega^0 = 1, Shi's rule by hand
   const std::vector<double> short_omega{1.0};
   CHECK_THROWS_AS(aco::transition_weights(tau, eta, 2.0, 1.0, aco::CornerFactor{short_omega, 1.0}),
                   DomainError);
