@@ -186,3 +186,29 @@ TEST_CASE("sensors2023.sim.run: a goal exactly goal_reach away is reached at onc
   CHECK(r.steps == 0);
   CHECK(r.time == 0.0);
 }
+
+TEST_CASE("sensors2023.eq12: the angular bound admits |w| equal to sqrt(2 dist dec_w)") {
+  // dist = 0.25, dec_w = 2: sqrt(2 * 0.25 * 2) = sqrt(1) = 1 exactly; |w| = 1 <= 1 is admissible
+  // (v = 0 <= sqrt(2 * 0.25 * 1) passes the linear part)
+  CHECK(admissible(0.0, 1.0, 0.25, 1.0, 2.0, Admissible::both));
+  CHECK(admissible(0.0, -1.0, 0.25, 1.0, 2.0, Admissible::both));
+  CHECK_FALSE(admissible(0.0, 1.0 + 1e-12, 0.25, 1.0, 2.0, Admissible::both));
+  // the linear bound alone ignores w
+  CHECK(admissible(0.0, 5.0, 0.25, 1.0, 2.0, Admissible::linear));
+}
+
+TEST_CASE("sensors2023.dwa.clearance: a disc is taken at its predicted position c + tau vel") {
+  // open 7 x 7 map (outside = blocked, 3.5 from the centre point), p = (3.5, 3.5), radius 0,
+  // cap 10; a disc of radius 0 at (1.5, 3.5) moving (1, 0) m/s: at tau = 1 it is at (2.5, 3.5),
+  // 1 away; at tau = 0 at (1.5, 3.5), 2 away; at tau = 2 on p itself, 0
+  const grid::Grid g = grid::Grid::from_rows_top_first(
+      {".......", ".......", ".......", ".......", ".......", ".......", "......."});
+  const std::vector<Disc> d{Disc{Point{1.5, 3.5}, 0.0, Point{1.0, 0.0}}};
+  const Obstacles obs{&g, {}, d};
+  CHECK(point_clearance(Point{3.5, 3.5}, obs, 0.0, 10.0, 1.0) == 1.0);
+  CHECK(point_clearance(Point{3.5, 3.5}, obs, 0.0, 10.0, 0.0) == 2.0);
+  CHECK(point_clearance(Point{3.5, 3.5}, obs, 0.0, 10.0, 2.0) == 0.0);
+  // the same with a vertical velocity (0, -1): at tau = 1.5 the disc is at (1.5, 2), |(2, 1.5)| = 2.5
+  const std::vector<Disc> v{Disc{Point{1.5, 3.5}, 0.0, Point{0.0, -1.0}}};
+  CHECK(point_clearance(Point{3.5, 3.5}, Obstacles{&g, {}, v}, 0.0, 10.0, 1.5) == 2.5);
+}
