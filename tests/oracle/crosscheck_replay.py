@@ -71,8 +71,24 @@ PLAN = {
     "drive.corner-speeds": ("mecanum", ("reverse", "scale"), None),
     "sensors2023.plan.astar-kinematic": ("sensors2023", ("swap", "mirror"), None),
 }
+# Hand-picked inputs beyond the golden variants, each for a case the variants do not reach (the
+# same comparison: pathref eval against tools/crosscheck under the rule's golden tolerance, on the
+# outputs its first valid golden test pins). cin2021.plan.ga: equal-fitness mutants A != B inside
+# the multidirectional mutation (pm = 1), where only "B replaces only if strictly fitter" keeps A
+# (mutant cin2021.op.mutation.fitter-tie changes draws and curves on each of these; found by a
+# search over 400 small random maps on 2026-12-03).
+EXTRA = {
+    "cin2021.plan.ga": [
+        {"grid": [".#...", ".....", "....."], "start": [1, 1], "goal": [4, 0], "seed": 12,
+         "population": 10, "generations": 4, "pm": 1.0, "research": "random"},
+        {"grid": [".....", ".....", "....#", ".....", "#.#.."], "start": [2, 1], "goal": [1, 4],
+         "seed": 32, "population": 6, "generations": 6, "pm": 1.0, "research": "greedy"},
+        {"grid": ["....", "....", "...."], "start": [3, 1], "goal": [1, 1], "seed": 4,
+         "population": 6, "generations": 4, "pm": 1.0, "research": "random"},
+    ],
+}
 MIN_PER_RULE = 2
-MIN_RUNS = 150  # 187 compared on 2026-12-03 (6 variants equal a golden input, 2 rejected by both)
+MIN_RUNS = 150  # 190 compared on 2026-12-03 (6 variants equal a golden input, 2 rejected by both)
 
 
 def mirrored(inp):
@@ -145,39 +161,42 @@ def main():
             doc = json.load(fh)
         tests = [(g, t) for g in doc["testGroups"] for t in g["tests"]]
         golden_inputs = [compose_input(doc, g, t) for g, t in tests]
+        first_valid = next((g, t) for g, t in tests if t["result"] == "valid")
+        extra = [(first_valid[0], first_valid[1], "hand-picked input", inp) for inp in EXTRA.get(rule, [])]
         for g, t in tests:
             if t["result"] == "invalid" or (only is not None and t["tcId"] not in only):
                 continue
+            extra.extend((g, t, label, inp) for label, inp in variants(compose_input(doc, g, t), kinds))
+        for g, t, label, inp in extra:  # hand-picked inputs use the first valid test's keys
             tol = t.get("tolerance", g["tolerance"])
             keys = sorted(t["expected"])
-            for label, inp in variants(compose_input(doc, g, t), kinds):
-                where = f"{rule} tcId {t['tcId']} ({label})"
-                if inp in golden_inputs:  # a symmetric map or list: nothing new to compare
-                    collisions += 1
-                    continue
-                proc = start_cpp(rule, inp)  # runs while Python computes
-                py, py_err = run_python(rule, inp)
-                cpp, cpp_err = finish_cpp(proc)
-                if py_err and cpp_err:
-                    rejected += 1
-                    if VERBOSE:
-                        print(f"both reject {where}: {py_err} | {cpp_err}")
-                    continue
-                if py_err or cpp_err:
-                    failures.append(f"{where}: pathref {cpp_err or 'accepts'}, crosscheck {py_err or 'accepts'}; "
-                                    f"input {json.dumps(inp, sort_keys=True)}")
-                    continue
-                counts[rule] += 1
-                for k in keys:
-                    if k not in py:
-                        failures.append(f"{where}: crosscheck gives no output {k!r}")
-                        continue
-                    d = compare({k: py[k]}, cpp, tol)
-                    if d:
-                        failures.append(f"{where}: pathref differs from crosscheck: {d}; "
-                                        f"input {json.dumps(inp, sort_keys=True)}")
+            where = f"{rule} tcId {t['tcId']} ({label})"
+            if inp in golden_inputs:  # a symmetric map or list: nothing new to compare
+                collisions += 1
+                continue
+            proc = start_cpp(rule, inp)  # runs while Python computes
+            py, py_err = run_python(rule, inp)
+            cpp, cpp_err = finish_cpp(proc)
+            if py_err and cpp_err:
+                rejected += 1
                 if VERBOSE:
-                    print(f"ok   {where}")
+                    print(f"both reject {where}: {py_err} | {cpp_err}")
+                continue
+            if py_err or cpp_err:
+                failures.append(f"{where}: pathref {cpp_err or 'accepts'}, crosscheck {py_err or 'accepts'}; "
+                                f"input {json.dumps(inp, sort_keys=True)}")
+                continue
+            counts[rule] += 1
+            for k in keys:
+                if k not in py:
+                    failures.append(f"{where}: crosscheck gives no output {k!r}")
+                    continue
+                d = compare({k: py[k]}, cpp, tol)
+                if d:
+                    failures.append(f"{where}: pathref differs from crosscheck: {d}; "
+                                    f"input {json.dumps(inp, sort_keys=True)}")
+            if VERBOSE:
+                print(f"ok   {where}")
         seconds[rule] = time.time() - t_rule
     runs = sum(counts.values())
     for rule, n in counts.items():
