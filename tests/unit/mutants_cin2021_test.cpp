@@ -1,5 +1,5 @@
 // spec: cin2021 rules (spec/index/cin2021-hga-aco.json, cin2021-srrt.json, cin2021-ml.json).
-// Tests added for issue 17's mutation target (tools/mutate.d/cin2021.json): each case pins the
+// Tests added for issue 17's mutation target (tools/mutate.d/catalogue.json, the cin2021 entries): each case pins the
 // boundary or constant a catalogued mutant changes, with an oracle derived by hand in the comment.
 #include <catch2/catch.hpp>
 
@@ -19,6 +19,8 @@
 #include "pathref/geometry/scene.hpp"
 #include "pathref/grid/grid.hpp"
 #include "pathref/ml/classifier.hpp"
+#include "pathref/planners/planner.hpp"
+#include "pathref/rng/draws.hpp"
 
 using namespace pathref;
 using grid::Cell;
@@ -263,4 +265,83 @@ TEST_CASE("cin2021.eq6: a tree whose counts tie votes for its first class", "[ci
   CHECK(ml::combine_votes(std::vector<double>{2, 2, 1, 3}, 2, ml::ForestVote::majority) == 0);
   // tree 1 {2, 2} -> 0, tree 2 {3, 1} -> 0: class 0 either way, tree 3 {0, 5} -> 1: 2 : 1
   CHECK(ml::combine_votes(std::vector<double>{2, 2, 3, 1, 0, 5}, 2, ml::ForestVote::majority) == 0);
+}
+
+TEST_CASE("cin2021.srrt.curve: the repair's nearest-node tie goes to the first raw index", "[cin2021][mutants]") {
+  // World [0, 10] x [-4, 4], obstacle [4.5, 5.5] x [-0.5, 0.5], inflation 0. Degree 1 over
+  // kept = {0, 3}: the curve is the segment (1, 0)-(9, 0); every sample has y = 0 exactly
+  // (a combination of two zero coordinates) and crosses the square, so the verdict is `enters`.
+  // Clamped knots {0, 0, 1, 1}: span_index gives k = 1 for every u, so the candidates are the raw
+  // indices strictly between kept[0] = 0 and kept[1] = 3: 1 and 2. Nodes (5, 2) and (5, -2) are
+  // mirror images in y = 0: for any sample (x, 0) both squared distances are (5 - x)^2 + 4, the
+  // same double. The spec's tie rule (smallest index) re-inserts 1; a `<=` comparison would
+  // take the later node, 2. After one insertion the polyline (1,0)-(5,+-2)-(9,0) keeps > 1 away
+  // from the square (line x -+ 2y - 1 = 0 is 2.5 / sqrt(5) from the nearest corner): clear.
+  const std::string text =
+      "{\"format\": \"pathref-scene 1\", \"origin\": [0, -4], \"width\": 10, \"height\": 8, "
+      "\"cell_size\": 1, \"radius\": 0, \"margin\": 0, "
+      "\"polygons\": [{\"vertices\": [[4.5, -0.5], [5.5, -0.5], [5.5, 0.5], [4.5, 0.5]]}], "
+      "\"start\": [0, 0], \"goal\": [1, 0]}";
+  const auto m = geometry::ObstacleMap::from_scene(geometry::parse_scene_json(text, "t.json"));
+  continuous::CurveParams p;
+  p.degree = 1;
+  const continuous::CurveParams no_repair = p;  // degree 1, repair off
+  p.repair = true;
+  const std::vector<std::size_t> kept = {0, 3};
+  for (const double first_y : {2.0, -2.0}) {  // either node first: the first one wins
+    const std::vector<continuous::Vec2> raw = {{1, 0}, {5, first_y}, {5, -first_y}, {9, 0}};
+    const auto off = continuous::smooth_path(m, raw, kept, no_repair);
+    REQUIRE(off.clearance.verdict == geometry::ClearanceVerdict::enters);
+    const auto s = static_cast<std::size_t>(off.clearance.segment);
+    REQUIRE(off.samples.points[s].y == 0.0);
+    const auto r = continuous::smooth_path(m, raw, kept, p);
+    CHECK(r.repair == "clear");
+    CHECK(r.inserted == std::vector<std::size_t>{1});
+    CHECK(r.kept == std::vector<std::size_t>{0, 1, 3});
+    CHECK(r.degree == 1);
+  }
+}
+
+TEST_CASE("cin2021.eq35: the dead-end penalty lowers the arc into the dead end, not the arc beyond", "[cin2021][mutants]") {
+  // Map: one row of three free cells D = (0,0), S = (1,0), G = (2,0). aco-cin, 2 ants, 1 iteration,
+  // dead_angle = penalise_only (D stays allowed after it is recorded), other defaults: alpha 1,
+  // beta 2, tau0 0.1, lambda 0.5, eta = 1 / distance = 1 for both moves, proportional selection
+  // (one roulette draw per step, also with a single candidate). At S the candidates in canonical
+  // order are D (slot S*8+3, left) and G (slot S*8+4, right).
+  // Seed 2's draws (res53 of init_genrand(2)): u0 = 0.43599..., u1 = 0.02592..., u2 = 0.54966...
+  // Ant 0 at S: weights (0.1, 0.1), D iff 0.1 >= u0 * 0.2: D. At D: S is tabu, no move: a deadlock
+  // point (one allowed move, into S, outside the table); Eq. 35 multiplies every arc INTO D by
+  // lambda: tau(S -> D) = 0.5 * 0.1 = 0.05 (tau(S -> G) untouched). Back at S: only G, draw u1.
+  // Ant 1 at S: weights (0.05, 0.1), D iff 0.05 >= u2 * 0.15 (u2 <= 1/3): no, G.
+  // So deadlocks = 1, table [[0,0]], draws = 3, path S, G. Penalising slot S*8 + dir(D -> S) = S*8+4
+  // instead (the arc S -> G, leading away from D) gives weights (0.1, 0.05): D iff u2 <= 2/3, a
+  // second deadlock and a fourth draw.
+  rng::Stream st(2);
+  const double u0 = st.next_double();
+  const double u1 = st.next_double();
+  const double u2 = st.next_double();
+  REQUIRE(u0 <= 0.5);
+  REQUIRE(u1 < 1.0);
+  REQUIRE(u2 > 1.0 / 3.0);
+  REQUIRE(u2 < 2.0 / 3.0);
+  // Eq. 35 written out for ant 1's choice, and the roulette it implies
+  const double tau0 = 0.1;
+  const double lambda = 0.5;
+  CHECK(rng::roulette(std::vector<double>{tau0, tau0}, u0) == 0);                 // ant 0 -> D
+  CHECK(rng::roulette(std::vector<double>{lambda * tau0, tau0}, u2) == 1);        // ant 1 -> G
+  CHECK(rng::roulette(std::vector<double>{tau0, lambda * tau0}, u2) == 0);        // wrong slot -> D
+  const grid::Grid g = grid::Grid::from_rows_top_first({"..."});
+  planners::Request req;
+  req.grid = &g;
+  req.start = Cell{1, 0};
+  req.goal = Cell{2, 0};
+  req.seed = 2;
+  req.params = planners::Json{{"ants", 2}, {"iterations", 1}, {"dead_angle", "penalise_only"}};
+  const auto r = planners::find_planner("aco-cin")->run(req);
+  REQUIRE(r.found);
+  CHECK(r.path == std::vector<Cell>{{1, 0}, {2, 0}});
+  CHECK(r.extra.at("deadlocks") == 1);
+  CHECK(r.extra.at("dead_angle_table") == planners::Json::parse("[[0,0]]"));
+  CHECK(r.extra.at("draws") == 3);
+  CHECK(r.extra.at("dead_ants_per_iteration") == planners::Json::parse("[0]"));
 }
