@@ -70,16 +70,24 @@ TEST_CASE("shi2022.table1: the IACO and IGA planners' defaults are the printed v
   CHECK(g.at("pm_max").get<double>() == 0.3);
 }
 
-TEST_CASE("shi2022.eq1: the rule evaluates grid::cell_centre with its forms", "[shi2022]") {
+TEST_CASE("shi2022.eq1: the three forms written out", "[shi2022]") {
   const rules::Rule* rule = rules::registry().find("shi2022.eq1");
   REQUIRE(rule != nullptr);
+  // spec shi2022.eq1 written out on the 6x6 map (N = W = 6): corrected x = (i mod W) + 0.5,
+  // y = floor(i / W) + 0.5; printed x = mod(s, N) + 0.5, y = ceil(s / N) - 0.5 with s = i
+  // (printed0) or s = i + 1 (printed1); ceil(s / N) = (s + N - 1) div N for s >= 0.
   for (std::int64_t i = 0; i < 36; ++i) {
-    for (const char* form : {"corrected", "printed0", "printed1"}) {
-      const grid::Point p = grid::cell_centre(i, 6, 6, grid::parse_eq1_form(form));
-      const rules::Json out =
-          rule->eval({{"i", i}, {"width", 6}, {"height", 6}, {"form", form}});
-      CHECK(out.at("x").get<double>() == p.x);
-      CHECK(out.at("y").get<double>() == p.y);
+    const auto eval = [&](const char* form) {
+      return rule->eval({{"i", i}, {"width", 6}, {"height", 6}, {"form", form}});
+    };
+    const rules::Json c = eval("corrected");
+    CHECK(c.at("x").get<double>() == static_cast<double>(i % 6) + 0.5);
+    CHECK(c.at("y").get<double>() == static_cast<double>(i / 6) + 0.5);
+    for (const std::int64_t base : {0, 1}) {
+      const std::int64_t s = i + base;
+      const rules::Json p = eval(base == 0 ? "printed0" : "printed1");
+      CHECK(p.at("x").get<double>() == static_cast<double>(s % 6) + 0.5);
+      CHECK(p.at("y").get<double>() == static_cast<double>((s + 5) / 6) - 0.5);
     }
   }
   CHECK_THROWS_AS(rule->eval({{"i", 36}, {"width", 6}, {"height", 6}}), DomainError);
