@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "pathref/io/json_text.hpp"
 #include "pathref/core/version.hpp"
 #include "pathref/core/error.hpp"
 #include "pathref/golden/runner.hpp"
@@ -30,7 +31,16 @@ using Json = nlohmann::json;
 using Clock = std::chrono::steady_clock;
 
 /// Longest response line accepted (a larger one is reported, not buffered).
-constexpr std::size_t max_response_bytes = std::size_t{64} << 20;
+constexpr std::size_t max_response_bytes = io::answer_limits.max_bytes;  ///< one answer line (spec/conform.md)
+/// An answer longer than this is shown in the report as an excerpt (answer_excerpt).
+constexpr std::size_t max_shown_answer = 400;
+
+/// A long or unreadable answer as the report shows it: its first max_shown_answer bytes (control and
+/// non-ASCII bytes escaped) and its size; where it first differs is in the case's `why`.
+Json answer_excerpt(const std::string& reply) {
+  if (reply.size() <= max_shown_answer) return Json(io::printable(reply, max_shown_answer));
+  return Json(io::printable(reply, max_shown_answer) + " (" + std::to_string(reply.size()) + " bytes in all)");
+}
 
 /// The user's program: `/bin/sh -c CMD` in its own process group, stdin/stdout piped, stderr
 /// inherited. Every wait is bounded; the group is killed when the session ends.
@@ -223,11 +233,16 @@ int run_conform(const ConformOptions& o) {
   const Json hello{{"protocol", "pathref-conform"}, {"version", 1}, {"pathref_version", std::string(pathref::version())}};
   std::optional<std::string> reply;
   if (prog.send(hello.dump(), timeout, why) && (reply = prog.receive(timeout, why))) {
-    const Json h = Json::parse(*reply, nullptr, false);
-    if (h.is_discarded() || !h.is_object() || h.value("protocol", Json()) != "pathref-conform" ||
+    Json h;
+    try {
+      h = io::parse_json_text(*reply, "the program's hello", 1, io::answer_limits);
+    } catch (const ParseError&) {
+      h = Json();
+    }
+    if (!h.is_object() || h.value("protocol", Json()) != "pathref-conform" ||
         h.value("version", Json()) != 1)
       fatal = "the program's first line is not the hello {\"protocol\": \"pathref-conform\", \"version\": 1}: " +
-              reply->substr(0, 200);
+              io::printable(*reply, 200);
     else if (h.contains("rules"))
       implemented = h.at("rules");
   } else {
@@ -266,10 +281,18 @@ int run_conform(const ConformOptions& o) {
           fatal = why;
           message = why;
         } else {
-          got = Json::parse(*reply, nullptr, false);
-          if (got.is_discarded() || !got.is_object()) {
-            message = "the answer is not a JSON object: " + reply->substr(0, 200);
-            got = *reply;
+          std::optional<std::string> refused;
+          try {
+            got = io::parse_json_text(*reply, "the answer", 1, io::answer_limits);
+          } catch (const ParseError& e) {
+            refused = e.what();
+          }
+          if (refused) {
+            message = "the answer is not acceptable JSON (" + io::printable(*refused, 300) + ")";
+            got = answer_excerpt(*reply);
+          } else if (!got.is_object()) {
+            message = "the answer is not a JSON object: " + io::printable(*reply, 200);
+            got = answer_excerpt(*reply);
           } else if (got.value("id", Json()) != request.at("id")) {
             message = "the answer's id is " + got.value("id", Json()).dump() + ", expected " + request.at("id").dump();
             fatal = "out of step: " + message;
@@ -297,7 +320,8 @@ int run_conform(const ConformOptions& o) {
           first_failure = Json{{"file", d.file},     {"rule", rule},         {"tcId", test.at("tcId")},
                                {"comment", test.value("comment", "")},     {"request", request},
                                {"expected", test.at("expected")},          {"result", test.at("result")},
-                               {"answer", got},      {"why", message}};
+                               {"answer", reply && reply->size() > max_shown_answer ? answer_excerpt(*reply) : got},
+                               {"why", message}};
         cases.push_back(std::move(c));
       }
   }

@@ -16,6 +16,7 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
+#include "pathref/io/input_file.hpp"
 #include "pathref/io/json_text.hpp"
 #include "pathref/core/error.hpp"
 #include "pathref/grid/json_codec.hpp"
@@ -244,9 +245,7 @@ int run_drive(const DriveOptions& o) {
   std::string text;
   std::string source;
   if (!o.path_file.empty()) {
-    std::ifstream in(o.path_file, std::ios::binary);
-    if (!in) throw UsageError("cannot open " + o.path_file);
-    text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    text = io::read_input_file(o.path_file, "path file", std::uintmax_t{1} << 30);  // as read_text_file
     source = o.path_file;
   } else {
     text.assign(std::istreambuf_iterator<char>(std::cin), std::istreambuf_iterator<char>());

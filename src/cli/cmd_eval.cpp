@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "pathref/io/json_text.hpp"
 #include "pathref/core/error.hpp"
 #include "pathref/core/version.hpp"
 #include "pathref/rules/registry.hpp"
@@ -24,8 +25,8 @@ rules::Json parse_assignments(const std::vector<std::string>& assignments) {
     const std::string key = a.substr(0, eq);
     const std::string text = a.substr(eq + 1);
     if (input.contains(key)) throw UsageError("input '" + key + "' given more than once");
-    rules::Json value = rules::Json::parse(text, nullptr, /*allow_exceptions=*/false);
-    input[key] = value.is_discarded() ? rules::Json(text) : value;
+    std::optional<rules::Json> value = io::parse_cli_json_value(text, "input '" + key + "'");
+    input[key] = value ? std::move(*value) : rules::Json(text);
   }
   return input;
 }

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "pathref/io/json_text.hpp"
 #include "pathref/core/version.hpp"
 #include "pathref/continuous/srrt.hpp"
 #include "pathref/core/error.hpp"
@@ -95,8 +96,8 @@ Json parse_sets(const std::vector<std::string>& sets) {
     const std::string key = a.substr(0, eq);
     if (out.contains(key)) throw UsageError("--set " + key + " given more than once");
     const std::string text = a.substr(eq + 1);
-    Json value = Json::parse(text, nullptr, /*allow_exceptions=*/false);
-    out[key] = value.is_discarded() ? Json(text) : value;
+    std::optional<Json> value = io::parse_cli_json_value(text, "--set " + key);
+    out[key] = value ? std::move(*value) : Json(text);
   }
   return out;
 }
@@ -106,7 +107,11 @@ Json parse_sets(const std::vector<std::string>& sets) {
 std::string set_syntax(const Json& v) {
   if (v.is_string()) {
     const auto& s = v.get_ref<const std::string&>();
-    return Json::parse(s, nullptr, false).is_discarded() ? s : v.dump();
+    try {
+      return io::parse_cli_json_value(s, "a parameter") ? v.dump() : s;
+    } catch (const UsageError&) {  // JSON beyond the value limits: quoted, so it reads back as this string
+      return v.dump();
+    }
   }
   return v.dump();
 }

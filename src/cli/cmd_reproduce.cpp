@@ -21,6 +21,7 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
+#include "pathref/io/input_file.hpp"
 #include "pathref/core/version.hpp"
 #include "pathref/core/error.hpp"
 #include "pathref/grid/grid.hpp"
@@ -203,14 +204,12 @@ std::map<std::string, Json> read_job_results(const std::string& dir) {
   std::sort(files.begin(), files.end());
   std::map<std::string, Json> out;
   for (const fs::path& f : files) {
-    std::ifstream in(f, std::ios::binary);
-    std::stringstream buf;
-    buf << in.rdbuf();
+    const std::string text = io::read_input_file(f.string(), "job result", io::document_limits.max_bytes);
     Json j;
     try {
-      j = Json::parse(buf.str());
-    } catch (const Json::exception& e) {
-      throw UsageError(fmt::format("--merge: '{}' is not JSON ({}); did its job fail?", f.string(), e.what()));
+      j = io::parse_json_text(text, f.string());
+    } catch (const ParseError& e) {
+      throw UsageError(fmt::format("--merge: {} (did its job fail?)", e.what()));
     }
     if (!j.is_object() || j.value("format", "") != "pathref-reproduce-run" || !j.contains("key") || !j.contains("record"))
       throw UsageError(fmt::format("--merge: '{}' is not the output of 'pathref reproduce run-job'", f.string()));
@@ -501,19 +500,13 @@ void add_reproduce_command(CLI::App& app, Action& run) {
   j->callback([&run] {
     run = [] {
       std::string text = job_text;
+      std::string job_source = "<job>";
       if (!text.empty() && text[0] == '@') {
-        std::ifstream in(text.substr(1), std::ios::binary);
-        if (!in) throw UsageError(fmt::format("cannot read job file '{}'", text.substr(1)));
-        std::stringstream buf;
-        buf << in.rdbuf();
-        text = buf.str();
+        const std::string file = text.substr(1);
+        text = io::read_input_file(file, "job file", io::document_limits.max_bytes);
+        job_source = file;
       }
-      Json job;
-      try {
-        job = Json::parse(text);
-      } catch (const Json::exception& e) {
-        throw UsageError(fmt::format("run-job: the job is not JSON ({})", e.what()));
-      }
+      const Json job = io::parse_json_text(text, job_source);
       Json out = reproduce::run_job(job);
       stamp_version(out);
       fmt::print("{}\n", out.dump());

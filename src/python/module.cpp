@@ -12,6 +12,7 @@
 #include <tuple>
 #include <vector>
 
+#include "pathref/io/json_text.hpp"
 #include "pathref/core/error.hpp"
 #include "pathref/core/version.hpp"
 #include "pathref/geometry/inflation.hpp"
@@ -72,7 +73,7 @@ bool python_interrupted() {
 std::string eval_rule(const std::string& rule_id, const std::string& input_json) {
   const pathref::rules::Rule* rule = pathref::rules::registry().find(rule_id);
   if (rule == nullptr) throw pathref::UsageError("unknown rule '" + rule_id + "' (see pathref.rules())");
-  const Json input = Json::parse(input_json);
+  const Json input = pathref::io::parse_json_text(input_json, "<input>", 1, pathref::io::cli_value_limits);
   return pathref::rules::evaluate(*rule, input).dump();
 }
 
@@ -86,7 +87,7 @@ std::string plan(const Blocked& blocked, const std::tuple<std::int64_t, std::int
     throw pathref::UsageError("unknown algo '" + algo + "' (known: " + known + ")");
   }
   const pathref::grid::Grid g = grid_from(blocked);
-  const Json overrides = Json::parse(params_json);
+  const Json overrides = pathref::io::parse_json_text(params_json, "<params>", 1, pathref::io::cli_value_limits);
   const Json merged = pathref::planners::merge_params(planner->defaults, overrides);  // UsageError for a bad key
   pathref::planners::Request req;
   req.grid = &g;

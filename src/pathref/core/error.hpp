@@ -33,6 +33,11 @@ class ParseError : public Error {
       : Error("ParseError", file + ":" + std::to_string(line) + ":" + std::to_string(column) +
                                 ": " + what),
         file_(std::move(file)), line_(line), column_(column) {}
+  /// Malformed input that came from no text with lines (a JSON value built by a caller, a rule's
+  /// input): `FILE: WHAT`, where WHAT starts with the JSON pointer of the value; line() and
+  /// column() are 0.
+  ParseError(std::string file, const std::string& what)
+      : Error("ParseError", file + ": " + what), file_(std::move(file)), line_(0), column_(0) {}
   [[nodiscard]] const std::string& file() const noexcept { return file_; }
   [[nodiscard]] std::size_t line() const noexcept { return line_; }
   [[nodiscard]] std::size_t column() const noexcept { return column_; }

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "pathref/core/error.hpp"
+#include "pathref/io/input_file.hpp"
 #include "pathref/io/json_text.hpp"
 
 namespace pathref::geometry {
@@ -16,95 +17,16 @@ using Json = nlohmann::json;
 
 namespace {
 
-constexpr std::size_t max_depth = 64;
 constexpr const char* format_name = "pathref-scene 1";
-
-/// SAX handler building a DOM in which every non-integer number keeps its exact text as a
-/// binary value (JSON text never produces binary values, so the two cannot be confused).
-class ExactDom {
- public:
-  explicit ExactDom(Json& root) : root_(root) {}
-  bool null() { return put(Json(nullptr)); }
-  bool boolean(bool v) { return put(Json(v)); }
-  bool number_integer(Json::number_integer_t v) { return put(Json(v)); }
-  bool number_unsigned(Json::number_unsigned_t v) { return put(Json(v)); }
-  bool number_float(Json::number_float_t, const Json::string_t& text) {
-    return put(Json::binary(Json::binary_t::container_type(text.begin(), text.end())));
-  }
-  bool string(Json::string_t& v) { return put(Json(v)); }
-  bool binary(Json::binary_t& v) { return put(Json::binary(v)); }
-  bool start_object(std::size_t) { return open(Json::object()); }
-  bool key(Json::string_t& k) {
-    Json& obj = *stack_.back();
-    if (obj.contains(k)) {
-      error_ = "duplicate key \"" + k + "\"";
-      return false;
-    }
-    key_ = k;
-    return true;
-  }
-  bool end_object() { stack_.pop_back(); return true; }
-  bool start_array(std::size_t) { return open(Json::array()); }
-  bool end_array() { stack_.pop_back(); return true; }
-  bool parse_error(std::size_t position, const std::string&, const nlohmann::detail::exception& e) {
-    position_ = position;
-    error_ = e.what();
-    return false;
-  }
-  [[nodiscard]] const std::string& error() const noexcept { return error_; }
-  [[nodiscard]] std::size_t position() const noexcept { return position_; }
-
- private:
-  bool put(Json v) {
-    if (stack_.empty()) {
-      root_ = std::move(v);
-      return true;
-    }
-    Json& parent = *stack_.back();
-    if (parent.is_array()) {
-      parent.push_back(std::move(v));
-    } else {
-      parent[key_] = std::move(v);
-    }
-    return true;
-  }
-  bool open(Json v) {
-    if (stack_.size() >= max_depth) {
-      error_ = "nesting deeper than 64 levels";
-      return false;
-    }
-    Json* slot = nullptr;
-    if (stack_.empty()) {
-      root_ = std::move(v);
-      slot = &root_;
-    } else {
-      Json& parent = *stack_.back();
-      if (parent.is_array()) {
-        parent.push_back(std::move(v));
-        slot = &parent.back();
-      } else {
-        parent[key_] = std::move(v);
-        slot = &parent[key_];
-      }
-    }
-    stack_.push_back(slot);
-    return true;
-  }
-
-  Json& root_;
-  std::vector<Json*> stack_;
-  std::string key_;
-  std::string error_;
-  std::size_t position_ = 0;
-};
 
 /// Reads values with JSON-pointer error messages.
 class Reader {
  public:
-  explicit Reader(std::string_view file) : file_(file) {}
+  /// `text`: the file's JSON text, for line and column (empty for a value that came from no file).
+  Reader(std::string_view file, std::string_view text) : file_(file), text_(text) {}
 
   [[noreturn]] void fail(const std::string& ptr, const std::string& what) const {
-    throw ParseError(file_, 0, 0, (ptr.empty() ? std::string("/") : ptr) + ": " + what);
+    throw io::json_error_at(text_, file_, ptr, what);
   }
 
   static std::string kind(const Json& v) {
@@ -170,13 +92,12 @@ class Reader {
 
  private:
   std::string file_;
+  std::string_view text_;
 };
 
-
-}  // namespace
-
-Scene scene_from_json(const Json& obj, std::string_view filename, SceneKeys keys) {
-  const Reader rd(filename);
+/// scene_from_json with the file's text at hand for line and column (parse_scene_json).
+Scene scene_from_json_text(const Json& obj, std::string_view filename, SceneKeys keys, std::string_view text) {
+  const Reader rd(filename, text);
   if (!obj.is_object()) rd.fail("", "expected a JSON object (a pathref-scene 1), got " + Reader::kind(obj));
   static const std::set<std::string> known = {"format", "name", "origin", "width", "height", "cell_size",
                                               "radius", "margin", "polygons", "start", "goal"};
@@ -242,16 +163,18 @@ Scene scene_from_json(const Json& obj, std::string_view filename, SceneKeys keys
   return s;
 }
 
+}  // namespace
+
+Scene scene_from_json(const Json& obj, std::string_view filename, SceneKeys keys) {
+  return scene_from_json_text(obj, filename, keys, {});
+}
+
 Scene parse_scene_json(std::string_view text, std::string_view filename) {
-  Json root;
-  ExactDom dom(root);
-  const bool ok = Json::sax_parse(text.begin(), text.end(), &dom, Json::input_format_t::json, true);
-  if (!ok) {
-    const auto [line, col] = io::line_column(text, dom.position() > 0 ? dom.position() - 1 : 0);
-    throw ParseError(std::string(filename), line, col,
-                     "expected valid JSON (" + (dom.error().empty() ? std::string("syntax error") : dom.error()) + ")");
-  }
-  return scene_from_json(root, filename, SceneKeys::file);
+  io::JsonLimits limits = io::document_limits;
+  limits.max_bytes = max_scene_file_bytes;
+  limits.decimal_text = true;  // every non-integer number keeps its exact decimal text
+  const Json root = io::parse_json_text(text, filename, 1, limits);
+  return scene_from_json_text(root, filename, SceneKeys::file, text);
 }
 
 std::string to_scene_json(const Scene& s) {
@@ -283,22 +206,7 @@ std::string to_scene_json(const Scene& s) {
 }
 
 Scene read_scene_file(const std::string& path) {
-  // Messages as for map files (spec/formats.md#limits): "cannot read scene file 'F': REASON".
-  std::error_code ec;
-  const auto st = std::filesystem::status(path, ec);
-  if (ec || !std::filesystem::exists(st))
-    throw UsageError("cannot read scene file '" + path + "': " + (ec ? ec.message() : std::string("no such file")));
-  if (!std::filesystem::is_regular_file(st))
-    throw UsageError("cannot read scene file '" + path + "': not a regular file");
-  const auto size = std::filesystem::file_size(path, ec);
-  if (ec) throw UsageError("cannot read scene file '" + path + "': " + ec.message());
-  if (size > max_scene_file_bytes)
-    throw UsageError("scene file '" + path + "' has " + std::to_string(size) + " bytes, more than the limit of " +
-                     std::to_string(max_scene_file_bytes));
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw UsageError("cannot read scene file '" + path + "': cannot open");
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  return parse_scene_json(text, path);
+  return parse_scene_json(io::read_input_file(path, "scene file", max_scene_file_bytes), path);
 }
 
 }  // namespace pathref::geometry

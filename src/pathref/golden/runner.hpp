@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <string>
 #include <vector>
+#include <string_view>
 
 #include <nlohmann/json.hpp>
 
@@ -48,10 +49,17 @@ struct Report {
 /// `dir` is not a directory or holds no such file (0 vectors never pass).
 [[nodiscard]] std::vector<std::filesystem::path> golden_files(const std::filesystem::path& dir);
 
-/// Reads one golden file: a JSON syntax error is a ParseError at its real line and column; a
-/// document without `rule`, `testGroups`, a group's `tolerance`/`tests`, a test's `tcId`,
-/// `result`, `expected` is a UsageError naming the file and where the key is missing.
+/// Reads one golden file through the JSON layer (io::parse_json_text: depth, size, duplicate keys,
+/// BOM) and checks its shape with check_document_shape before any vector runs.
 [[nodiscard]] Json read_document(const std::filesystem::path& path);
+
+/// The schema constraints the runner relies on (spec/golden-format.md#runner-checks): `rule` a
+/// string; `testGroups` a non-empty array; each group a `tolerance` {abs >= 0, rel >= 0[, ulps >= 0]}
+/// and a non-empty `tests`; each test an integer `tcId` >= 1, `result` one of valid / invalid /
+/// acceptable, an `expected`, and a test `tolerance` as a group's; `numberOfTests`, when present,
+/// equal to the number of tests. A ParseError `FILE:LINE:COLUMN: POINTER: what was expected` at the
+/// offending value (`text`: the file's JSON text; empty for a document that came from no file).
+void check_document_shape(const Json& doc, const std::string& file, std::string_view text);
 
 /// Checks one parsed golden document. `file` is only used in messages.
 [[nodiscard]] Report check_document(const Json& doc, const std::string& file);

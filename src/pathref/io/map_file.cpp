@@ -1,5 +1,7 @@
 #include "pathref/io/map_file.hpp"
 
+#include "pathref/io/input_file.hpp"
+
 #include <fmt/core.h>
 
 #include <cerrno>
@@ -178,21 +180,7 @@ MapFile parse_map_text(std::string_view text_in, std::string_view filename, MapF
 }
 
 std::string read_text_file(const std::string& path, std::string_view what) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  const auto status = fs::status(path, ec);
-  if (ec || !fs::exists(status))
-    throw UsageError(fmt::format("cannot read {} '{}': {}", what, path,
-                                 ec ? ec.message() : std::string("no such file")));
-  if (!fs::is_regular_file(status)) throw UsageError(fmt::format("cannot read {} '{}': not a regular file", what, path));
-  const auto size = fs::file_size(path, ec);
-  if (ec) throw UsageError(fmt::format("cannot read {} '{}': {}", what, path, ec.message()));
-  if (size > max_map_file_bytes)
-    throw UsageError(fmt::format("{} '{}' has {} bytes, more than the limit of {}", what, path, size,
-                                 max_map_file_bytes));
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw UsageError(fmt::format("cannot open {} '{}': {}", what, path, std::strerror(errno)));
-  return std::string{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  return read_input_file(path, what, max_map_file_bytes);
 }
 
 LoadedMapFile load_map_file(const std::string& path, const MapReadOptions& options) {

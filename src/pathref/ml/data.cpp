@@ -1,5 +1,7 @@
 #include "pathref/ml/data.hpp"
 
+#include "pathref/io/input_file.hpp"
+
 #include <charconv>
 #include <cmath>
 #include <fstream>
@@ -115,11 +117,7 @@ Dataset parse_wall_following(std::string_view text, std::string_view filename,
 }
 
 Dataset read_wall_following(const std::string& path, const DataLimits& limits) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw ParseError(path, 1, 1, "a readable file");
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return parse_wall_following(ss.str(), path, limits);
+  return parse_wall_following(io::read_input_file(path, "data file", limits.max_bytes), path, limits);
 }
 
 Dataset subset(const Dataset& d, std::span<const std::size_t> indices) {

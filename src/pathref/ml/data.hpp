@@ -39,6 +39,7 @@ struct DataLimits {
   std::size_t max_rows = 1'000'000;
   std::size_t max_features = 64;
   std::size_t max_line = 4096;  ///< bytes per line, without the line end
+  std::size_t max_bytes = std::size_t{256} << 20;  ///< the file's size, checked before reading
 };
 
 /// Parses the UCI text: each line `v_1,...,v_d,LABEL` (d >= 1 equal on every line, v_i a finite
@@ -49,7 +50,8 @@ struct DataLimits {
 [[nodiscard]] Dataset parse_wall_following(std::string_view text, std::string_view filename,
                                            const DataLimits& limits = {});
 
-/// Reads and parses a file (ParseError naming the file when it cannot be read).
+/// Reads (io::read_input_file: a regular file of at most limits.max_bytes, else UsageError with the
+/// reason) and parses a file.
 [[nodiscard]] Dataset read_wall_following(const std::string& path, const DataLimits& limits = {});
 
 /// The rows `indices` of `d`, in that order.

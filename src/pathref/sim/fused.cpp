@@ -11,6 +11,7 @@
 #include <utility>
 
 #include "pathref/core/error.hpp"
+#include "pathref/io/json_reader.hpp"
 #include "pathref/io/json_text.hpp"
 #include "pathref/grid/json_codec.hpp"
 #include "pathref/io/map_file.hpp"
@@ -20,158 +21,14 @@ namespace pathref::dwa {
 
 namespace {
 
-// ---------------------------------------------------------------- positions of JSON values
-
-/// JSON pointer -> byte offset of the value's first byte, for a text nlohmann accepted.
-class Positions {
+/// The scenario reader: io::JsonReader plus the format's cells and option names.
+class Reader : public io::JsonReader {
  public:
-  explicit Positions(std::string_view text) : t_(text) {
-    skip_ws();
-    value("");
-  }
-  [[nodiscard]] std::size_t at(const std::string& ptr) const {
-    const auto it = pos_.find(ptr);
-    return it == pos_.end() ? 0 : it->second;
-  }
+  using io::JsonReader::JsonReader;
 
- private:
-  void skip_ws() {
-    while (i_ < t_.size() && (t_[i_] == ' ' || t_[i_] == '\t' || t_[i_] == '\n' || t_[i_] == '\r')) ++i_;
-  }
-  std::string string_token() {  // at '"'; returns the decoded string
-    const std::size_t start = i_++;
-    while (i_ < t_.size() && t_[i_] != '"') i_ += t_[i_] == '\\' ? std::size_t{2} : std::size_t{1};
-    ++i_;
-    try {
-      return Json::parse(t_.substr(start, i_ - start)).get<std::string>();
-    } catch (const std::exception&) {
-      return {};
-    }
-  }
-  static std::string escape(const std::string& key) {
-    std::string out;
-    for (const char c : key) {
-      if (c == '~') out += "~0";
-      else if (c == '/') out += "~1";
-      else out += c;
-    }
-    return out;
-  }
-  void value(const std::string& ptr) {
-    if (depth_ > 512 || i_ >= t_.size()) return;
-    pos_.emplace(ptr, i_);
-    const char c = t_[i_];
-    if (c == '{') {
-      ++depth_;
-      ++i_;
-      skip_ws();
-      while (i_ < t_.size() && t_[i_] != '}') {
-        const std::string key = string_token();
-        skip_ws();
-        ++i_;  // ':'
-        skip_ws();
-        value(ptr + "/" + escape(key));
-        skip_ws();
-        if (i_ < t_.size() && t_[i_] == ',') ++i_;
-        skip_ws();
-      }
-      ++i_;
-      --depth_;
-    } else if (c == '[') {
-      ++depth_;
-      ++i_;
-      skip_ws();
-      std::size_t n = 0;
-      while (i_ < t_.size() && t_[i_] != ']') {
-        value(ptr + "/" + std::to_string(n++));
-        skip_ws();
-        if (i_ < t_.size() && t_[i_] == ',') ++i_;
-        skip_ws();
-      }
-      ++i_;
-      --depth_;
-    } else if (c == '"') {
-      (void)string_token();
-    } else {
-      while (i_ < t_.size() && std::string_view(",]} \t\r\n").find(t_[i_]) == std::string_view::npos) ++i_;
-    }
-  }
-  std::string_view t_;
-  std::size_t i_ = 0;
-  int depth_ = 0;
-  std::map<std::string, std::size_t> pos_;
-};
-
-class Reader {
- public:
-  Reader(std::string_view file, std::string_view text, const Positions* pos) : file_(file), text_(text), pos_(pos) {}
-
-  [[noreturn]] void fail(const std::string& ptr, const std::string& what) const {
-    std::size_t line = 0, col = 0;
-    if (pos_ != nullptr) {
-      // the value's position, or the nearest enclosing value's (a missing key: its object)
-      std::string p = ptr;
-      for (;;) {
-        const std::size_t at = pos_->at(p);
-        if (at > 0 || p.empty()) {
-          std::tie(line, col) = io::line_column(text_, at);
-          break;
-        }
-        const auto slash = p.rfind('/');
-        p = slash == std::string::npos ? std::string() : p.substr(0, slash);
-      }
-    }
-    throw ParseError(file_, line, col, (ptr.empty() ? std::string("/") : ptr) + ": " + what);
-  }
-  static std::string kind(const Json& v) {
-    if (v.is_number_float()) return "a non-integer number";
-    if (v.is_number()) return "an integer";
-    const std::string t = v.type_name();
-    return (t == "object" || t == "array" ? "an " : "a ") + t;
-  }
-  static std::string fmt(double x) { return Json(x).dump(); }
-
-  double number(const Json& v, const std::string& ptr, double lo, double hi, bool lo_open = false) const {
-    const std::string want =
-        std::string("expected a number in ") + (lo_open ? "(" : "[") + fmt(lo) + ", " + fmt(hi) + "]";
-    if (!v.is_number()) fail(ptr, want + ", got " + kind(v));
-    const double x = v.get<double>();
-    if (!std::isfinite(x) || x < lo || x > hi || (lo_open && x == lo)) fail(ptr, want + ", got " + fmt(x));
-    return x;
-  }
-  std::int64_t integer(const Json& v, const std::string& ptr, std::int64_t lo, std::int64_t hi) const {
-    const std::string want = "expected an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
-    if (v.is_number_unsigned()) {
-      const auto u = v.get<std::uint64_t>();
-      if (u > static_cast<std::uint64_t>(hi)) fail(ptr, want + ", got " + std::to_string(u));
-      return static_cast<std::int64_t>(u);
-    }
-    if (v.is_number_integer()) {
-      const auto i = v.get<std::int64_t>();
-      if (i < lo || i > hi) fail(ptr, want + ", got " + std::to_string(i));
-      return i;
-    }
-    fail(ptr, want + ", got " + kind(v));
-  }
-  std::string string(const Json& v, const std::string& ptr) const {
-    if (!v.is_string()) fail(ptr, "expected a string, got " + kind(v));
-    return v.get<std::string>();
-  }
-  grid::Cell cell(const Json& v, const std::string& ptr) const {
+  [[nodiscard]] grid::Cell cell(const Json& v, const std::string& ptr) const {
     if (!v.is_array() || v.size() != 2) fail(ptr, "expected a cell [x, y] (two integers), got " + kind(v));
     return grid::Cell{integer(v[0], ptr + "/0", 0, 1000000), integer(v[1], ptr + "/1", 0, 1000000)};
-  }
-  void keys(const Json& obj, const std::string& ptr, std::initializer_list<const char*> allowed) const {
-    if (!obj.is_object()) fail(ptr, "expected an object, got " + kind(obj));
-    for (auto it = obj.begin(); it != obj.end(); ++it) {
-      bool ok = false;
-      for (const char* k : allowed) ok = ok || it.key() == k;
-      if (!ok) {
-        std::string list;
-        for (const char* k : allowed) list += std::string(list.empty() ? "" : ", ") + k;
-        fail(ptr + "/" + it.key(), "unknown key (expected one of: " + list + ")");
-      }
-    }
   }
   /// An option name through the rule's parser; the UsageError becomes a ParseError here.
   template <class F>
@@ -183,17 +40,9 @@ class Reader {
       fail(ptr, e.what());
     }
   }
-
- private:
-  std::string file_;
-  std::string_view text_;
-  const Positions* pos_;
 };
 
-const Json* find(const Json& obj, const char* key) {
-  const auto it = obj.find(key);
-  return it == obj.end() ? nullptr : &*it;
-}
+using io::find;
 
 DwaParams read_dwa(const Reader& rd, const Json& o, const std::string& ptr, DwaParams p, HeadingTarget* target) {
   rd.keys(o, ptr, {"dt", "horizon", "v_min", "v_max", "w_max", "acc_v", "dec_v", "acc_w", "dec_w", "v_res", "w_res",
@@ -427,7 +276,7 @@ Point centre_of(grid::Cell c) { return Point{static_cast<double>(c.x) + 0.5, sta
 
 std::string scenario_format(std::string_view text) {
   try {
-    const Json doc = Json::parse(text.begin(), text.end());
+    const Json doc = io::parse_json_text(text, "");
     if (doc.is_object()) {
       const auto it = doc.find("format");
       if (it != doc.end() && it->is_string()) return it->get<std::string>();
@@ -439,18 +288,17 @@ std::string scenario_format(std::string_view text) {
 
 FusedScenario parse_fused_scenario(std::string_view text, std::string_view file, const std::string& base_dir) {
   const Json doc = io::parse_json_text(text, file);
-  const Positions pos(text);
-  const Reader rd(file, text, &pos);
+  const Reader rd(file, text);
   return read_scenario(rd, doc, base_dir);
 }
 
 FusedScenario fused_scenario_from_json(const Json& doc, std::string_view file) {
-  const Reader rd(file, {}, nullptr);
+  const Reader rd(file, {});
   return read_scenario(rd, doc, "");
 }
 
 DwaParams dwa_params_from_json(const Json& block, DwaParams base, HeadingTarget* heading_target) {
-  const Reader rd("<eval>", {}, nullptr);
+  const Reader rd("<eval>", {});
   return read_dwa(rd, block, "/dwa", base, heading_target);
 }
 

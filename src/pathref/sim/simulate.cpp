@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "pathref/core/error.hpp"
+#include "pathref/io/json_reader.hpp"
 #include "pathref/io/json_text.hpp"
 #include "pathref/equations/heuristics.hpp"
 #include "pathref/equations/rls.hpp"
@@ -27,91 +28,38 @@ namespace pathref::sim {
 
 namespace {
 
-class Reader {
+/// The scenario reader: io::JsonReader plus the format's points and cells.
+class Reader : public io::JsonReader {
  public:
-  explicit Reader(std::string_view file) : file_(file) {}
+  using io::JsonReader::JsonReader;
 
-  [[noreturn]] void fail(const std::string& ptr, const std::string& what) const {
-    throw ParseError(file_, 0, 0, (ptr.empty() ? std::string("/") : ptr) + ": " + what);
-  }
-
-  static std::string kind(const Json& v) {
-    if (v.is_number_float()) return "a non-integer number";
-    if (v.is_number()) return "an integer";
-    const std::string t = v.type_name();
-    return (t == "object" || t == "array" ? "an " : "a ") + t;
-  }
-
-  double number(const Json& v, const std::string& ptr, double lo, double hi, bool lo_open) const {
-    const std::string want = std::string("expected a number in ") + (lo_open ? "(" : "[") +
-                             fmt(lo) + ", " + fmt(hi) + "]";
-    if (!v.is_number()) fail(ptr, want + ", got " + kind(v));
-    const double x = v.get<double>();
-    if (!std::isfinite(x) || x < lo || x > hi || (lo_open && x == lo)) fail(ptr, want + ", got " + fmt(x));
-    return x;
-  }
-
-  std::int64_t integer(const Json& v, const std::string& ptr, std::int64_t lo, std::int64_t hi) const {
-    const std::string want = "expected an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
-    if (v.is_number_unsigned()) {
-      const auto u = v.get<std::uint64_t>();
-      if (u > static_cast<std::uint64_t>(hi)) fail(ptr, want + ", got " + std::to_string(u));
-      return static_cast<std::int64_t>(u);
-    }
-    if (v.is_number_integer()) {
-      const auto i = v.get<std::int64_t>();
-      if (i < lo || i > hi) fail(ptr, want + ", got " + std::to_string(i));
-      return i;
-    }
-    fail(ptr, want + ", got " + kind(v));
-  }
-
-  std::string string(const Json& v, const std::string& ptr) const {
-    if (!v.is_string()) fail(ptr, "expected a string, got " + kind(v));
-    return v.get<std::string>();
-  }
-
-  Vec2 point(const Json& v, const std::string& ptr, double bound) const {
+  [[nodiscard]] Vec2 point(const Json& v, const std::string& ptr, double bound) const {
     if (!v.is_array() || v.size() != 2) fail(ptr, "expected [x, y] (an array of two numbers), got " + kind(v));
     return Vec2{number(v[0], ptr + "/0", -bound, bound, false), number(v[1], ptr + "/1", -bound, bound, false)};
   }
 
-  grid::Cell cell(const Json& v, const std::string& ptr) const {
+  [[nodiscard]] grid::Cell cell(const Json& v, const std::string& ptr) const {
     if (!v.is_array() || v.size() != 2) fail(ptr, "expected a cell [x, y] (two integers), got " + kind(v));
     return grid::Cell{integer(v[0], ptr + "/0", 0, 1000000), integer(v[1], ptr + "/1", 0, 1000000)};
   }
-
-  void keys(const Json& obj, const std::string& ptr, std::initializer_list<const char*> allowed) const {
-    if (!obj.is_object()) fail(ptr, "expected an object, got " + kind(obj));
-    for (auto it = obj.begin(); it != obj.end(); ++it) {
-      bool ok = false;
-      for (const char* k : allowed) ok = ok || it.key() == k;
-      if (!ok) {
-        std::string list;
-        for (const char* k : allowed) list += std::string(list.empty() ? "" : ", ") + k;
-        fail(ptr + "/" + it.key(), "unknown key (expected one of: " + list + ")");
-      }
-    }
-  }
-
-  static std::string fmt(double x) {
-    std::string s = nlohmann::json(x).dump();
-    return s;
-  }
-
- private:
-  std::string file_;
 };
 
-const Json* find(const Json& obj, const char* key) {
-  const auto it = obj.find(key);
-  return it == obj.end() ? nullptr : &*it;
-}
+using io::find;
 
 }  // namespace
 
+namespace {
+Scenario read_scenario(const Json& doc, std::string_view file, std::string_view text, const std::string& base_dir);
+}  // namespace
+
 Scenario scenario_from_json(const Json& doc, std::string_view file, const std::string& base_dir) {
-  const Reader rd(file);
+  return read_scenario(doc, file, {}, base_dir);
+}
+
+namespace {
+/// scenario_from_json with the file's text at hand for line and column (parse_scenario).
+Scenario read_scenario(const Json& doc, std::string_view file, std::string_view text, const std::string& base_dir) {
+  const Reader rd(file, text);
   rd.keys(doc, "", {"format", "map", "start", "goal", "policy", "path", "planner", "seed", "dt",
                     "horizon", "robot", "margin", "noise", "t_max", "lambda", "frontal_cos",
                     "obstacles", "comment"});
@@ -254,10 +202,11 @@ Scenario scenario_from_json(const Json& doc, std::string_view file, const std::s
   }
   return s;
 }
+}  // namespace
 
 Scenario parse_scenario(std::string_view text, std::string_view file, const std::string& base_dir) {
   const Json doc = io::parse_json_text(text, file);
-  return scenario_from_json(doc, file, base_dir);
+  return read_scenario(doc, file, text, base_dir);
 }
 
 // ---------------------------------------------------------------------------------------------
