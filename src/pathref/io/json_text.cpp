@@ -62,7 +62,7 @@ namespace {
 /// The offset just past the string token that starts at `i` (text[i] == '"').
 std::size_t skip_string(std::string_view t, std::size_t i) {
   ++i;
-  while (i < t.size() && t[i] != '"') i += t[i] == '\\' ? 2 : 1;
+  while (i < t.size() && t[i] != '"') i += t[i] == '\\' ? std::size_t{2} : std::size_t{1};
   return i < t.size() ? i + 1 : t.size();
 }
 
