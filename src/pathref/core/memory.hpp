@@ -19,12 +19,12 @@ inline constexpr std::uint64_t min_limit = std::uint64_t{1} << 20;
 
 /// A --max-memory value: a decimal integer of bytes, optionally followed by one suffix K, M, G
 /// or T (binary: 2^10, 2^20, 2^30, 2^40; `KiB`, `MiB`, `GiB`, `TiB` and a trailing `B` are
-/// accepted too; case-insensitive), in [1 MiB, 2^62]. Spec: cli.memory.
+/// accepted too; case-insensitive), in [1 MiB, 2^62]. Spec: spec/cli.md#memory.
 /// UsageError naming `option` and the text otherwise.
 [[nodiscard]] std::uint64_t parse_size(std::string_view text, std::string_view option = "--max-memory");
 
 /// `bytes` for a message: exact bytes and the binary size rounded to one decimal
-/// (`"5368709120 bytes (5.0 GiB)"`). Spec: cli.memory.
+/// (`"5368709120 bytes (5.0 GiB)"`). Spec: spec/cli.md#memory.
 [[nodiscard]] std::string show_bytes(std::uint64_t bytes);
 
 /// `count * bytes_each` saturated at UINT64_MAX (estimates never wrap around).
@@ -34,7 +34,7 @@ inline constexpr std::uint64_t min_limit = std::uint64_t{1} << 20;
 
 /// Throws UsageError "WHAT needs an estimated N bytes (X GiB), more than the memory limit of L
 /// bytes (Y GiB); raise it with --max-memory SIZE or make the input smaller (spec/cli.md#memory)"
-/// when `estimate > limit`; does nothing otherwise. Spec: cli.memory.
+/// when `estimate > limit`; does nothing otherwise. Spec: spec/cli.md#memory.
 void require_within(std::uint64_t estimate, std::uint64_t limit, std::string_view what);
 
 }  // namespace pathref::memory
