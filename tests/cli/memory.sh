@@ -36,7 +36,7 @@ expect_limited 400000 2 "the ant colony on a 4096x4096 grid (84 bytes per cell) 
 # 2. A 229-byte scene declaring a 16384x16384 world: plan --algo astar took 5.1 GB. Refused with
 #    the default limit (4 GiB) before the world is rasterised: 2^28 cells x 20 bytes per cell.
 cat >"$tmp/huge.json" <<'JSON'
-{"format": "pathref-scene 1", "name": "huge", "width": 16384, "height": 16384, "cell_size": 1,
+{"format": "pathref-scene 1", "name": "huge", "origin": [0, 0], "width": 16384, "height": 16384, "cell_size": 1,
  "radius": 0.5, "margin": 0, "polygons": [{"vertices": [[100, 100], [200, 100], [200, 200]]}],
  "start": [1, 1], "goal": [16000, 16000]}
 JSON
@@ -49,7 +49,7 @@ expect_limited 300000 2 "the scene's 16384x16384 world (2 bytes per cell" \
 
 # 3. A path file of 2^24 + 1 nodes (1.5 GB before its limit error): refused at the first node too
 #    many, holding the text and nothing per number.
-yes 7 | head -n 16777217 >"$tmp/long.txt"
+python3 -c "import sys; sys.stdout.write('7\\n' * (2**24 + 1))" >"$tmp/long.txt"
 expect_limited 400000 2 "long.txt:16777217:1: a path has more than 16777216 nodes" \
   check --path "$tmp/long.txt" --path-format node --builtin grid20
 
