@@ -9,6 +9,7 @@
 
 #include "commands.hpp"
 #include "pathref/core/error.hpp"
+#include "pathref/core/memory.hpp"
 #include "pathref/geometry/inflation.hpp"
 #include "pathref/io/map_file.hpp"
 
@@ -75,9 +76,21 @@ void add_map_read_options(CLI::App* cmd, MapReadArgs& args) {
       ->type_name("N");
   cmd->add_option("--max-cells", args.max_cells, "largest number of cells a map may have (default 268435456)")
       ->type_name("N");
+  add_max_memory_option(cmd, args.max_memory);
 }
 
-io::MapReadOptions map_read_options(const MapReadArgs& args) {
+void add_max_memory_option(CLI::App* cmd, std::string& value) {
+  cmd->add_option("--max-memory", value,
+                  "memory limit: a run whose estimated need exceeds it is refused before allocating "
+                  "(bytes, or with K/M/G/T suffix; default 4G; spec/cli.md#memory)")
+      ->type_name("SIZE");
+}
+
+std::uint64_t max_memory_of(const std::string& text) {
+  return text.empty() ? memory::default_limit : memory::parse_size(text, "--max-memory");
+}
+
+io::MapReadOptions map_read_options(const MapReadArgs& args, std::uint64_t bytes_per_cell) {
   io::MapReadOptions o;
   o.format = io::parse_map_format(args.format);
   o.terrain.swamp_free = args.swamp == "free";
@@ -85,6 +98,8 @@ io::MapReadOptions map_read_options(const MapReadArgs& args) {
   o.ros_unknown = io::parse_unknown_as(args.unknown);
   if (!args.max_side.empty()) o.limits.max_side = parse_limit(args.max_side, "--max-side");
   if (!args.max_cells.empty()) o.limits.max_cells = parse_limit(args.max_cells, "--max-cells");
+  o.limits.max_memory = max_memory_of(args.max_memory);
+  o.limits.bytes_per_cell = bytes_per_cell;
   o.scene_to_map = geometry::scene_map;  // .json: polygon scenes, inflated exactly
   return o;
 }

@@ -26,11 +26,17 @@ void add_inflate_command(CLI::App& app, Action& run) {
                   "write the grid map to FILE instead of stdout (-o/--output as in convert; --out kept as an alias)")
       ->type_name("FILE");
   cmd->add_option("--svg", svg_path, "also write an SVG figure of the inflated map");
+  static std::string max_memory;
+  add_max_memory_option(cmd, max_memory);
   cmd->callback([&run] {
     run = [] {
+      const std::uint64_t limit = max_memory_of(max_memory);
       const geometry::Scene scene = geometry::read_scene_file(scene_path);
-      const geometry::InflatedScene inf = geometry::inflate_scene_file(scene, scene_path);
-      io::MapFile map{inf.grid, inf.start, inf.goal, scene.name};
+      // spec/inflation.md#cli: the raster (1 byte per cell) and its text (1 byte per cell) are
+      // estimated before either is allocated.
+      geometry::require_raster_memory(scene, scene_path, limit, 2);
+      geometry::InflatedScene inf = geometry::inflate_scene_file(scene, scene_path);
+      const io::MapFile map{std::move(inf.grid), inf.start, inf.goal, scene.name};  // moved, not copied
       const std::string text = io::to_grid_text(map);
       if (out_path.empty()) {
         fmt::print("{}", text);
@@ -41,8 +47,8 @@ void add_inflate_command(CLI::App& app, Action& run) {
         const std::string title = fmt::format(
             "{} inflated by r = {} + {} ({} of {} cells blocked)",
             scene.name.empty() ? std::string("scene") : scene.name, geometry::to_string(scene.radius),
-            geometry::to_string(scene.margin), inf.grid.blocked_count(), inf.grid.cell_count());
-        write_figure(svg_path, io::svg_map(inf.grid, inf.start, inf.goal, {}, title));
+            geometry::to_string(scene.margin), map.grid.blocked_count(), map.grid.cell_count());
+        write_figure(svg_path, io::svg_map(map.grid, inf.start, inf.goal, {}, title));
       }
       return 0;
     };

@@ -307,7 +307,8 @@ int run_plan(const PlanOptions& o) {
   const Json overrides = parse_sets(o.sets);
   // Validates every --set key and type before anything runs (UsageError names a bad key).
   const Json merged = planners::merge_params(planner->defaults, overrides);
-  const RunMap lm = load_run_map(o.map_file, o.builtin, o.read);
+  const std::uint64_t max_memory = max_memory_of(o.read.max_memory);
+  const RunMap lm = load_run_map(o.map_file, o.builtin, o.read, planner->bytes_per_cell);
   const grid::Grid& g = lm.map.grid;
   const grid::Cell start = endpoint(o.start, lm.map.start, "--start", "start");
   const grid::Cell goal = endpoint(o.goal, lm.map.goal, "--goal", "goal");
@@ -325,6 +326,7 @@ int run_plan(const PlanOptions& o) {
   req.policy = policy;
   req.seed = seed;
   req.params = overrides;
+  req.max_memory = max_memory;
   rng::Trace trace;
   if (!o.trace.empty()) req.trace = &trace;
   io::PlanRecord rec{o.algo, req.seed, req.policy, lm.source, start, goal, merged, planner->run(req)};
@@ -395,7 +397,8 @@ const char* policy_meaning(grid::CornerPolicy p) {
   return "";
 }
 
-RunMap load_run_map(const std::string& map_file, const std::string& builtin, const MapReadArgs& read) {
+RunMap load_run_map(const std::string& map_file, const std::string& builtin, const MapReadArgs& read,
+                    std::uint64_t bytes_per_cell) {
   if (map_file.empty() == builtin.empty())
     throw UsageError("give exactly one of --map FILE or --builtin NAME (see pathref maps)");
   if (!builtin.empty()) {
@@ -404,7 +407,7 @@ RunMap load_run_map(const std::string& map_file, const std::string& builtin, con
       throw UsageError(fmt::format("unknown built-in map '{}' (known: {})", builtin, io::builtin_map_names()));
     return {io::load_builtin_map(*b), io::MapSource{"builtin", std::string(b->name), std::nullopt}};
   }
-  io::MapFile m = io::load_map_file(map_file, map_read_options(read)).map;
+  io::MapFile m = io::load_map_file(map_file, map_read_options(read, bytes_per_cell)).map;
   const std::string name = m.name.empty() ? map_file : m.name;
   return {std::move(m), io::MapSource{"file", name, map_file}};
 }

@@ -103,7 +103,7 @@ int run_scen(const ScenOptions& o) {
   const auto every = parse_count(o.every, "--every", 1, 2147483647);
   const int digits = static_cast<int>(parse_count(o.digits, "--digits", 0, 17));
   const auto jobs = static_cast<std::size_t>(parse_count(o.jobs, "--jobs", 1, 256));
-  const io::MapReadOptions read = map_read_options(o.read);
+  const io::MapReadOptions read = map_read_options(o.read, planner->bytes_per_cell);
   const std::string text = io::read_text_file(o.file, "scenario file");
   const io::ScenFile sf = io::parse_movingai_scen(text, o.file, read.limits);
 
@@ -144,6 +144,7 @@ int run_scen(const ScenOptions& o) {
         req.policy = grid::CornerPolicy::strict;
         req.seed = 1;
         req.workspace = &workspace;
+        req.max_memory = read.limits.max_memory / jobs;  // spec/cli.md#memory: each worker's share
         const double t0 = thread_cpu_seconds();
         const planners::Result r = planner->run(req);
         const double t1 = thread_cpu_seconds();

@@ -41,11 +41,20 @@ struct MapReadArgs {
   std::string unknown = "blocked";  ///< ROS maps: what unknown cells become
   std::string max_side;   ///< "" = default
   std::string max_cells;  ///< "" = default
+  std::string max_memory;  ///< "" = default (memory::default_limit; spec/cli.md#memory)
 };
-/// Adds --format, --swamp, --water, --unknown, --max-side, --max-cells to `cmd` (defined in cmd_convert.cpp).
+/// Adds --format, --swamp, --water, --unknown, --max-side, --max-cells, --max-memory to `cmd`
+/// (defined in cmd_convert.cpp).
 void add_map_read_options(CLI::App* cmd, MapReadArgs& args);
-/// The library options for `args`; UsageError for a bad --max-side / --max-cells value.
-[[nodiscard]] io::MapReadOptions map_read_options(const MapReadArgs& args);
+/// The library options for `args`; UsageError for a bad --max-side / --max-cells / --max-memory
+/// value. `bytes_per_cell`: what the command needs per map cell once it is read (the grid's 1, or
+/// the planner's Planner::bytes_per_cell), checked by readers before allocating (ReadLimits).
+[[nodiscard]] io::MapReadOptions map_read_options(const MapReadArgs& args, std::uint64_t bytes_per_cell = 1);
+/// Adds `--max-memory SIZE` (spec/cli.md#memory) to `cmd`, storing the text in `value`; the
+/// commands without the map-reading options (inflate, golden, simulate) use it. Defined in cmd_convert.cpp.
+void add_max_memory_option(CLI::App* cmd, std::string& value);
+/// The limit of a --max-memory text ("" = memory::default_limit); UsageError for a bad value.
+[[nodiscard]] std::uint64_t max_memory_of(const std::string& text);
 void add_inflate_command(CLI::App& app, Action& run);  // inflate (spec/inflation.md#cli)
 void add_simulate_command(CLI::App& app, Action& run);  // simulate (spec/han-sim.md#cli)
 void add_reproduce_command(CLI::App& app, Action& run);  // reproduce (spec/reproduce.md)
@@ -79,7 +88,8 @@ struct RunMap {
 };
 /// The map of `--map FILE` or `--builtin NAME` (exactly one non-empty; UsageError otherwise, and
 /// for an unknown built-in). Defined in cmd_plan.cpp (spec/cli.md#plan).
-[[nodiscard]] RunMap load_run_map(const std::string& map_file, const std::string& builtin, const MapReadArgs& read);
+[[nodiscard]] RunMap load_run_map(const std::string& map_file, const std::string& builtin, const MapReadArgs& read,
+                                  std::uint64_t bytes_per_cell = 1);
 
 /// What a corner policy allows, in words (the `policy` line of plan and check). Defined in cmd_plan.cpp.
 [[nodiscard]] const char* policy_meaning(grid::CornerPolicy p);

@@ -4,9 +4,11 @@
 // Spec: spec/formats.md#polygon-scene-json ("As a map"), spec/inflation.md (inflation.scene).
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <string>
 
 #include "pathref/core/error.hpp"
+#include "pathref/core/memory.hpp"
 #include "pathref/geometry/inflation.hpp"
 #include "pathref/io/map_file.hpp"
 
@@ -18,6 +20,15 @@ InflatedScene inflate_scene_file(const Scene& scene, const std::string& filename
   } catch (const DomainError& e) {
     throw DomainError(filename + ": " + e.what());
   }
+}
+
+void require_raster_memory(const Scene& scene, const std::string& filename, std::uint64_t max_memory,
+                           std::uint64_t bytes_per_cell) {
+  const auto cells = static_cast<std::uint64_t>(scene.width) * static_cast<std::uint64_t>(scene.height);
+  memory::require_within(memory::times(cells, std::max<std::uint64_t>(bytes_per_cell, 1)), max_memory,
+                         fmt::format("{}: the scene's {}x{} world ({} bytes per cell{})", filename, scene.width,
+                                     scene.height, std::max<std::uint64_t>(bytes_per_cell, 1),
+                                     bytes_per_cell > 1 ? ", the grid and the planner's state" : ": its raster"));
 }
 
 io::MapFile scene_map(std::string_view text, const std::string& filename, const io::ReadLimits& limits) {
@@ -32,6 +43,9 @@ io::MapFile scene_map(std::string_view text, const std::string& filename, const 
   if (w > limits.max_cells / h)
     throw ParseError(filename, 0, 0, fmt::format("/width: a {}x{} grid exceeds the limit of {} cells", w, h,
                                                  limits.max_cells));
+  // spec/formats.md#limits: a scene of a few hundred bytes can declare a 2^28-cell world; its
+  // raster (and the run on it) is estimated before the grid is allocated.
+  require_raster_memory(scene, filename, limits.max_memory, limits.bytes_per_cell);
   InflatedScene inf = inflate_scene_file(scene, filename);
   return io::MapFile{std::move(inf.grid), inf.start, inf.goal, scene.name};
 }

@@ -73,6 +73,13 @@ struct InflatedScene {
 [[nodiscard]] io::MapFile scene_map(std::string_view text, const std::string& filename,
                                     const io::ReadLimits& limits);
 
+/// UsageError `FILE: the scene's WxH world (B bytes per cell...) needs an estimated N bytes ...,
+/// more than the memory limit of L bytes ...` when width x height x bytes_per_cell exceeds
+/// `max_memory` (spec/formats.md#limits, spec/cli.md#memory): called before the raster is
+/// allocated by scene_map and by `pathref inflate`. bytes_per_cell 0 counts as 1 (the raster).
+void require_raster_memory(const Scene& scene, const std::string& filename, std::uint64_t max_memory,
+                           std::uint64_t bytes_per_cell);
+
 /// inflate_scene with its DomainErrors prefixed by `filename: ` (the CLI's `inflate`). Spec: inflation.scene.
 [[nodiscard]] InflatedScene inflate_scene_file(const Scene& scene, const std::string& filename);
 

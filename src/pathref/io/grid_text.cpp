@@ -330,9 +330,11 @@ std::string to_grid_text(const MapFile& map) {
   if (map.goal) out += fmt::format("goal {} {}\n", map.goal->x, map.goal->y);
   out += "map\n";
   out.reserve(out.size() + static_cast<std::size_t>(g.cell_count() + g.height()));
-  for (const std::string& row : g.to_rows_top_first()) {
-    out += row;
-    out += '\n';
+  // The rows of Grid::to_rows_top_first, written straight into the text (no second copy of the
+  // map as a vector of rows: spec/formats.md#limits, 1 byte per cell for the text).
+  for (std::int64_t y = g.height() - 1; y >= 0; --y) {
+    for (std::int64_t x = 0; x < g.width(); ++x) out.push_back(g.blocked(grid::Cell{x, y}) ? '#' : '.');
+    out.push_back('\n');
   }
   return out;
 }

@@ -12,6 +12,7 @@
 #include <string_view>
 #include <vector>
 
+#include "pathref/core/memory.hpp"
 #include "pathref/grid/grid.hpp"
 #include "pathref/io/grid_text.hpp"
 #include "pathref/io/ros_map.hpp"
@@ -24,6 +25,13 @@ namespace pathref::io {
 struct ReadLimits {
   std::int64_t max_side = grid::Grid::max_cells;   ///< largest width or height
   std::int64_t max_cells = grid::Grid::max_cells;  ///< largest width * height
+  /// The memory limit (spec/cli.md#memory, --max-memory) and the bytes per cell the caller will
+  /// need once the map is read (the grid's 1 byte, or a planner's Planner::bytes_per_cell): a
+  /// reader whose input can declare more cells than its text holds (a polygon scene's world)
+  /// refuses W x H x bytes_per_cell > max_memory before allocating the grid (UsageError naming
+  /// the estimate and the limit). Text grid formats are bounded by their text (>= 1 byte per cell).
+  std::uint64_t max_memory = memory::default_limit;
+  std::uint64_t bytes_per_cell = 1;
 };
 
 /// Checks that `limits` are within [1, Grid::max_cells]; UsageError naming the bad one.

@@ -90,67 +90,118 @@ void push_number(PathRecord& rec, std::int64_t v, const std::string& file, std::
   rec.numbers.push_back(v);
 }
 
-struct Token {
-  std::string_view text;
-  std::size_t column;
-};
-struct Row {
-  std::vector<Token> tokens;
-  std::size_t line;
+/// Whether c ends a number token (a separator, a row or line end, a comment start).
+bool token_end(char c) {
+  return c == '\n' || c == ' ' || c == '\t' || c == ',' || c == '\r' || c == ';' || c == '[' || c == ']' ||
+         c == '#' || c == '%';
+}
+
+/// One text row: a line, or a ';'-separated part of one (MATLAB mat2str); '#' and '%' start a
+/// comment; blanks, tabs, commas, '[' and ']' separate numbers. A row is kept as its byte range
+/// and counts, not as a list of tokens (spec/formats.md#limits: the text reader holds the text
+/// and 8 bytes per number, nothing per token), and its tokens are scanned again when read.
+struct RowSpan {
+  std::size_t begin = 0;   ///< offset of the row's first byte
+  std::size_t end = 0;     ///< offset just past the row (its ';' or '\n' not included)
+  std::size_t line = 1;    ///< 1-based line
+  std::size_t column = 1;  ///< 1-based column of the byte at `begin`
+  std::size_t count = 0;   ///< tokens in the row
+  std::size_t first_column = 1;  ///< column of its first token
 };
 
-/// Text rows: a line, or a ';'-separated part of one (MATLAB mat2str); '#' and '%' start a
-/// comment; blanks, tabs, commas, '[' and ']' separate numbers.
-std::vector<Row> text_rows(std::string_view text, const std::string& file) {
-  std::vector<Row> rows;
-  Row cur{{}, 1};
-  std::size_t line = 1, col = 1, count = 0;
-  bool comment = false;
-  auto end_row = [&](std::size_t next_line) {
-    if (!cur.tokens.empty()) rows.push_back(std::move(cur));
-    cur = Row{{}, next_line};
-  };
-  for (std::size_t i = 0; i < text.size();) {
+/// Calls fn(token text, column) for every token of `row`, in order.
+template <class Fn>
+void for_each_token(std::string_view text, const RowSpan& row, Fn&& fn) {
+  std::size_t col = row.column;
+  for (std::size_t i = row.begin; i < row.end;) {
     const char c = text[i];
-    if (c == '\n') {
-      end_row(line + 1);
-      ++line;
-      col = 1;
-      comment = false;
-      ++i;
-      continue;
-    }
-    if (comment) {
+    if (c == '#' || c == '%') return;  // the rest of the line is a comment
+    if (c == ' ' || c == '\t' || c == ',' || c == '\r' || c == '[' || c == ']') {
       ++i;
       ++col;
       continue;
     }
-    if (c == '#' || c == '%') {
-      comment = true;
-    } else if (c == ';') {
-      end_row(line);
-    } else if (c == ' ' || c == '\t' || c == ',' || c == '\r' || c == '[' || c == ']') {
-      // separator
-    } else {
-      std::size_t j = i;
-      while (j < text.size() && text[j] != '\n' && text[j] != ' ' && text[j] != '\t' && text[j] != ',' &&
-             text[j] != '\r' && text[j] != ';' && text[j] != '[' && text[j] != ']' && text[j] != '#' &&
-             text[j] != '%')
-        ++j;
-      if (++count > 2 * max_path_nodes)
-        throw ParseError(file, line, col, fmt::format("a path has more than {} nodes", max_path_nodes));
-      cur.line = line;
-      cur.tokens.push_back(Token{text.substr(i, j - i), col});
-      col += j - i;
-      i = j;
-      continue;
-    }
-    ++i;
-    ++col;
+    std::size_t j = i;
+    while (j < text.size() && !token_end(text[j])) ++j;
+    fn(text.substr(i, j - i), col);
+    col += j - i;
+    i = j;
   }
-  end_row(line);
-  return rows;
 }
+
+/// The rows of `text` one at a time (empty rows skipped), with the token counts of the old
+/// token-list reader: more than 2 x max_path_nodes numbers in the whole text is a ParseError at
+/// the first number too many, raised while scanning (before anything is stored).
+class RowScanner {
+ public:
+  RowScanner(std::string_view text, const std::string& file) : text_(text), file_(file) {}
+  /// The next non-empty row into `out`; false at the end of the text.
+  bool next(RowSpan& out) {
+    while (i_ <= text_.size()) {
+      RowSpan row;
+      row.begin = i_;
+      row.line = line_;
+      row.column = col_;
+      bool comment = false;
+      bool newline = false;
+      while (i_ < text_.size()) {
+        const char c = text_[i_];
+        if (c == '\n') {
+          newline = true;
+          break;
+        }
+        if (comment) {
+          ++i_;
+          ++col_;
+          continue;
+        }
+        if (c == '#' || c == '%') {
+          comment = true;
+        } else if (c == ';') {
+          break;
+        } else if (!(c == ' ' || c == '\t' || c == ',' || c == '\r' || c == '[' || c == ']')) {
+          std::size_t j = i_;
+          while (j < text_.size() && !token_end(text_[j])) ++j;
+          if (++count_ > 2 * max_path_nodes)
+            throw ParseError(file_, line_, col_, fmt::format("a path has more than {} nodes", max_path_nodes));
+          if (row.count++ == 0) row.first_column = col_;
+          col_ += j - i_;
+          i_ = j;
+          continue;
+        }
+        ++i_;
+        ++col_;
+      }
+      row.end = i_;
+      if (i_ >= text_.size()) {
+        i_ = text_.size() + 1;  // done after this row
+      } else {
+        ++i_;  // past the ';' or '\n'
+        if (newline) {
+          ++line_;
+          col_ = 1;
+        } else {
+          ++col_;
+        }
+      }
+      if (row.count > 0) {
+        out = row;
+        return true;
+      }
+    }
+    return false;
+  }
+  /// Numbers seen so far.
+  [[nodiscard]] std::size_t numbers() const noexcept { return count_; }
+
+ private:
+  std::string_view text_;
+  const std::string& file_;
+  std::size_t i_ = 0;
+  std::size_t line_ = 1;
+  std::size_t col_ = 1;
+  std::size_t count_ = 0;
+};
 
 std::string shown(std::string_view t) {
   std::string s;
@@ -159,49 +210,74 @@ std::string shown(std::string_view t) {
 }
 
 PathRecord read_text(std::string_view text, const std::string& file, PathFormat format) {
-  const std::vector<Row> rows = text_rows(text, file);
-  if (rows.empty()) throw ParseError(file, 1, 1, "no path: the file has no number (expected x y lines or node numbers)");
-  if (format == PathFormat::automatic) {
-    bool all2 = true, all1 = true;
-    for (const Row& r : rows) {
-      all2 = all2 && r.tokens.size() == 2;
-      all1 = all1 && r.tokens.size() == 1;
+  // Pass 1: row counts only (no token stored), for the format detection and its messages.
+  RowSpan first, mismatch, row;
+  std::size_t rows = 0;
+  bool all2 = true, all1 = true, mismatched = false;
+  {
+    RowScanner scan(text, file);
+    while (scan.next(row)) {
+      if (rows++ == 0) first = row;
+      all2 = all2 && row.count == 2;
+      all1 = all1 && row.count == 1;
+      if (!mismatched && row.count != first.count) {
+        mismatched = true;
+        mismatch = row;
+      }
     }
+  }
+  if (rows == 0) throw ParseError(file, 1, 1, "no path: the file has no number (expected x y lines or node numbers)");
+  if (format == PathFormat::automatic) {
     if (all2) {
       format = PathFormat::xy;
-    } else if (all1 || rows.size() == 1) {
+    } else if (all1 || rows == 1) {
       format = PathFormat::node;
     } else {
-      const std::size_t want = rows[0].tokens.size();
-      for (const Row& r : rows)
-        if (r.tokens.size() != want)
-          throw ParseError(file, r.line, r.tokens[0].column,
-                           fmt::format("expected {} number(s) on this line like line {} (two per line: x y; "
-                                       "one per line: node numbers), got {}",
-                                       want, rows[0].line, r.tokens.size()));
-      throw ParseError(file, rows[0].line, rows[0].tokens[0].column,
+      if (mismatched)
+        throw ParseError(file, mismatch.line, mismatch.first_column,
+                         fmt::format("expected {} number(s) on this line like line {} (two per line: x y; "
+                                     "one per line: node numbers), got {}",
+                                     first.count, first.line, mismatch.count));
+      throw ParseError(file, first.line, first.first_column,
                        fmt::format("{} numbers per line: expected two (x y) or one (a node number); give "
                                    "--path-format for a row vector of node numbers",
-                                   want));
+                                   first.count));
     }
   }
   if (format == PathFormat::plan)
-    throw ParseError(file, rows[0].line, rows[0].tokens[0].column, "expected a pathref-plan JSON object");
+    throw ParseError(file, first.line, first.first_column, "expected a pathref-plan JSON object");
+  // Pass 2: the numbers, in file order, with the errors of the one-pass reader in the same order.
+  // A text with more numbers than max_path_nodes nodes of this format is read without storing
+  // (its limit error comes at the same number as before): the numbers are stored only when they
+  // fit (spec/formats.md#limits: 8 bytes per number, at most 2 x 2^24 numbers).
+  const std::size_t per_node = format == PathFormat::node ? 1 : 2;
   PathRecord rec{file, format, {}, nullptr};
-  for (const Row& r : rows) {
-    if (format != PathFormat::node && r.tokens.size() != 2)
-      throw ParseError(file, r.line, r.tokens[0].column,
+  std::size_t total = 0;
+  {
+    RowScanner scan(text, file);
+    while (scan.next(row)) total += row.count;
+  }
+  const bool store = total <= max_path_nodes * per_node;
+  if (store) rec.numbers.reserve(total);
+  std::size_t seen = 0;
+  RowScanner scan(text, file);
+  while (scan.next(row)) {
+    if (format != PathFormat::node && row.count != 2)
+      throw ParseError(file, row.line, row.first_column,
                        fmt::format("expected two numbers ({}) on this line, got {}",
-                                   format == PathFormat::xy ? "x y" : "row col", r.tokens.size()));
-    for (const Token& t : r.tokens) {
+                                   format == PathFormat::xy ? "x y" : "row col", row.count));
+    for_each_token(text, row, [&](std::string_view t, std::size_t column) {
       std::int64_t v = 0;
-      if (!integral_value(t.text, v))
-        throw ParseError(file, r.line, t.column,
+      if (!integral_value(t, v))
+        throw ParseError(file, row.line, column,
                          fmt::format("expected an integer of magnitude at most {} (a cell coordinate or node "
                                      "number), got '{}'",
-                                     max_path_number, shown(t.text)));
-      push_number(rec, v, file, r.line, t.column);
-    }
+                                     max_path_number, shown(t)));
+      if (seen / per_node >= max_path_nodes && seen % per_node == 0)
+        throw ParseError(file, row.line, column, fmt::format("a path has more than {} nodes", max_path_nodes));
+      ++seen;
+      if (store) rec.numbers.push_back(v);
+    });
   }
   return rec;
 }

@@ -20,6 +20,7 @@ Planner colony_planner(std::string name, std::string description, ant_colony::Co
   p.name = std::move(name);
   p.description = std::move(description);
   p.defaults = ant_colony::to_params(preset());
+  p.bytes_per_cell = ant_colony::bytes_per_cell;
   p.run = [defaults = p.defaults, preset](const Request& req) {
     if (req.grid == nullptr) throw UsageError("plan request without a grid");
     const Json params = merge_params(defaults, req.params);
@@ -88,6 +89,7 @@ Planner make_astar_han_planner() {
       "8-direction A* with the Chebyshev heuristic (Han (IJACSA) Sec. III.B, Eq. 8), "
       "spec/han-iaco.md";
   p.defaults = Json{{"h_form", "chebyshev"}};
+  p.bytes_per_cell = search::bytes_per_cell;
   p.run = [defaults = p.defaults](const Request& req) {
     if (req.grid == nullptr) throw UsageError("plan request without a grid");
     Json params = merge_params(defaults, req.params);
@@ -95,6 +97,7 @@ Planner make_astar_han_planner() {
     if (form != "chebyshev" && form != "octile")
       throw UsageError("h_form must be chebyshev or octile, not '" + form + "'");
     const auto h = heuristics::parse_heuristic(form);
+    search::require_memory(req, *req.grid, "astar-han");
     search::Outcome o = search::astar(*req.grid, req.start, req.goal, req.policy, h);
     Result r;
     r.found = o.found;

@@ -13,6 +13,7 @@
 #include <utility>
 
 #include "pathref/core/error.hpp"
+#include "pathref/core/memory.hpp"
 #include "pathref/equations/metrics.hpp"
 #include "pathref/equations/pseudo_random.hpp"
 #include "pathref/rng/draws.hpp"
@@ -163,38 +164,45 @@ int direction(std::int64_t dx, std::int64_t dy) {
   return k > 4 ? k - 1 : k;
 }
 
-struct Arc {
-  std::int64_t to;  ///< target cell index
-  int dir;          ///< direction slot
-};
+/// The step (dx, dy) of direction slot k (the inverse of direction()).
+constexpr std::int64_t slot_dx[8] = {-1, 0, 1, -1, 1, -1, 0, 1};
+constexpr std::int64_t slot_dy[8] = {-1, -1, -1, 0, 0, 1, 1, 1};
+/// Whether direction slot k is a diagonal step.
+constexpr bool slot_diagonal[8] = {true, false, true, false, false, true, false, true};
 
-/// The allowed moves of every free cell, from grid::neighbours (canonical order), in one array:
-/// the moves of cell i are arcs[offset[i] .. offset[i+1]).
-struct Adjacency {
-  std::vector<std::size_t> offset;
-  std::vector<Arc> arcs;
-  [[nodiscard]] std::span<const Arc> of(std::int64_t i) const {
-    const auto u = static_cast<std::size_t>(i);
-    return std::span<const Arc>(arcs).subspan(offset[u], offset[u + 1] - offset[u]);
-  }
-};
-
-Adjacency adjacency(const grid::Grid& g, grid::CornerPolicy policy) {
-  Adjacency adj;
-  adj.offset.assign(static_cast<std::size_t>(g.cell_count()) + 1, 0);
-  for (std::int64_t i = 0; i < g.cell_count(); ++i) {
-    const grid::Cell c = g.cell(i);
-    if (g.free(c))
-      for (const grid::Move& m : grid::neighbours(g, c, policy))
-        adj.arcs.push_back(Arc{g.index(m.to), direction(m.to.x - c.x, m.to.y - c.y)});
-    adj.offset[static_cast<std::size_t>(i) + 1] = adj.arcs.size();
-  }
-  return adj;
+/// The allowed moves of every free cell as one byte (spec shi2022.plan.aco, "Memory"): bit k is
+/// set iff the step in direction slot k is allowed (grid::step_allowed under `policy`), so the
+/// moves of cell i in ascending bit order are grid::neighbours(g, cell i) in canonical order
+/// (grid.neighbour-order: rows bottom to top, columns left to right = ascending slot). 1 byte
+/// per cell, where a list of (target, slot) arcs took up to 8 x 16 bytes and its growth twice that.
+std::vector<std::uint8_t> move_masks(const grid::Grid& g, grid::CornerPolicy policy) {
+  std::vector<std::uint8_t> masks(static_cast<std::size_t>(g.cell_count()), 0);
+  for (std::int64_t y = 0; y < g.height(); ++y)
+    for (std::int64_t x = 0; x < g.width(); ++x) {
+      const grid::Cell c{x, y};
+      if (!g.free(c)) continue;
+      std::uint8_t m = 0;
+      for (int k = 0; k < 8; ++k)
+        if (grid::step_allowed(g, c, grid::Cell{x + slot_dx[k], y + slot_dy[k]}, policy))
+          m = static_cast<std::uint8_t>(m | (1U << k));
+      masks[static_cast<std::size_t>(y * g.width() + x)] = m;
+    }
+  return masks;
 }
 
 Json number_or_null(double v) { return std::isfinite(v) ? Json(v) : Json(nullptr); }
 
+/// Bytes one stored distinct path of n cells takes: its cells in AntPath (16 B each), its key in
+/// the `seen` map (8 B per cell index) and about 160 B of vector and map-node overhead.
+std::uint64_t distinct_path_bytes(std::size_t n) {
+  return memory::plus(memory::times(n, 24), 160);
+}
+
 }  // namespace
+
+std::uint64_t memory_estimate(std::int64_t cells) noexcept {
+  return memory::times(static_cast<std::uint64_t>(cells < 0 ? 0 : cells), bytes_per_cell);
+}
 
 // ---- presets and parameters -----------------------------------------------------------------
 
@@ -444,7 +452,13 @@ Run run(const planners::Request& req, const Config& cfg, rng::Stream& stream,
 
   const std::int64_t cells = g.cell_count();
   const auto ucells = static_cast<std::size_t>(cells);
-  const Adjacency adj = adjacency(g, req.policy);
+  // spec shi2022.plan.aco "Memory": the per-cell state is estimated before it is allocated.
+  const std::uint64_t fixed = memory_estimate(cells);
+  const std::string what = fmt::format("the ant colony on a {}x{} grid ({} bytes per cell)", g.width(),
+                                       g.height(), bytes_per_cell);
+  memory::require_within(fixed, req.max_memory, what);
+  const std::vector<std::uint8_t> moves = move_masks(g, req.policy);
+  const std::int64_t W = g.width();
   const std::int64_t start = g.index(req.start);
   const std::int64_t goal = g.index(req.goal);
   const grid::Cell goal_cell = req.goal;
@@ -477,18 +491,19 @@ Run run(const planners::Request& req, const Config& cfg, rng::Stream& stream,
   std::vector<double> lengths(m, 0.0);
   std::vector<grid::Cell> cell_path;
 
-  // pow(eta_ij, beta) of every move (cell, direction slot), computed on first use (-1: not yet):
-  // eta depends only on the move and the goal, so this is transition_weights' pow(eta, beta)
-  // evaluated once instead of per step (the same doubles; spec shi2022.eq2, aco::transition_weights_into).
-  std::vector<double> eta_pow(ucells * 8U, -1.0);
+  // pow(eta_ij, beta) of every move, computed on first use (-1: not yet): eta depends only on the
+  // move and the goal, so this is transition_weights' pow(eta, beta) evaluated once instead of per
+  // step (the same doubles; spec shi2022.eq2, aco::transition_weights_into). Every eta form is a
+  // function of the target cell j and of d_ij alone (1 for a straight step, sqrt 2 for a diagonal
+  // one: metrics::centre_distance of (dx, dy)), so the cache holds two values per target cell,
+  // eta_pow[2 j + diagonal], not eight per (cell, direction slot).
+  std::vector<double> eta_pow(ucells * 2U, -1.0);
 
   // per-move scratch
   std::vector<double> w_tau;
   std::vector<double> w_eta;
   std::vector<double> weights;
   // per-iteration scratch of the deposit grouping
-  std::vector<std::size_t> slot_count;
-  std::vector<std::size_t> slot_fill;
   std::vector<double> grouped;
   std::vector<grid::Cell> cand_cells;
   std::vector<std::int64_t> cand_index;
@@ -505,6 +520,16 @@ Run run(const planners::Request& req, const Config& cfg, rng::Stream& stream,
   Json it_best = Json::array();
   Json it_worst = Json::array();
   std::map<std::vector<std::int64_t>, std::size_t> seen;
+  // What grows during the run (spec shi2022.plan.aco "Memory"): the ants' walks, the distinct
+  // paths and the best path, counted as they grow against req.max_memory.
+  std::uint64_t distinct_bytes = 0;
+  const auto check_growth = [&] {
+    std::uint64_t grown = memory::times(touched.capacity(), 8);
+    for (const auto& p : paths) grown = memory::plus(grown, memory::times(p.capacity(), 8));
+    grown = memory::plus(grown, memory::times(best_path.capacity(), 8));
+    grown = memory::plus(grown, distinct_bytes);
+    memory::require_within(memory::plus(fixed, grown), req.max_memory, what + " and its stored paths so far");
+  };
 
   const auto to_cells = [&](const std::vector<std::int64_t>& idx) {
     std::vector<grid::Cell> v;
@@ -535,28 +560,32 @@ Run run(const planners::Request& req, const Config& cfg, rng::Stream& stream,
       while (path.back() != goal) {
         const std::int64_t cur = path.back();
         const grid::Cell cur_cell = g.cell(cur);
-        const std::span<const Arc> arcs = adj.of(cur);
+        const unsigned mask = moves[static_cast<std::size_t>(cur)];
+        const auto target = [&](int k) { return cur + slot_dy[k] * W + slot_dx[k]; };
         w_tau.clear();
         w_eta.clear();
         cand_cells.clear();
         cand_index.clear();
-        for (const Arc& arc : arcs) {
-          if (tabu[static_cast<std::size_t>(arc.to)] != 0) continue;
-          if (exclude_table && dead_table[static_cast<std::size_t>(arc.to)] != 0) continue;
-          const grid::Cell to = g.cell(arc.to);
-          cand_index.push_back(arc.to);
+        for (int k = 0; k < 8; ++k) {
+          if ((mask & (1U << k)) == 0) continue;
+          const std::int64_t to_index = target(k);
+          if (tabu[static_cast<std::size_t>(to_index)] != 0) continue;
+          if (exclude_table && dead_table[static_cast<std::size_t>(to_index)] != 0) continue;
+          const grid::Cell to = g.cell(to_index);
+          cand_index.push_back(to_index);
           cand_cells.push_back(to);
-          const std::size_t slot = static_cast<std::size_t>(cur) * 8U + static_cast<std::size_t>(arc.dir);
+          const std::size_t slot = static_cast<std::size_t>(cur) * 8U + static_cast<std::size_t>(k);
           w_tau.push_back(tau[slot]);
-          if (eta_pow[slot] < 0.0) {
+          const std::size_t eslot = static_cast<std::size_t>(to_index) * 2U + (slot_diagonal[k] ? 1U : 0U);
+          if (eta_pow[eslot] < 0.0) {
             const double eta =
                 cfg.eta == Eta::inverse_distance ? aco::eta_inverse_distance(cur_cell, to)
                 : cfg.eta == Eta::goal_directed  ? aco::eta_goal_directed(cur_cell, to, goal_cell)
                                                  : aco::eta_goal_inverse(to, goal_cell, cfg.eta_goal);
             require(std::isfinite(eta) && eta >= 0.0, "eta must be finite and >= 0");
-            eta_pow[slot] = std::pow(eta, cfg.beta);
+            eta_pow[eslot] = std::pow(eta, cfg.beta);
           }
-          w_eta.push_back(eta_pow[slot]);
+          w_eta.push_back(eta_pow[eslot]);
         }
         if (cand_index.empty()) {  // dead end
           if (cfg.dead_end == DeadEnd::die) {
@@ -566,7 +595,8 @@ Run run(const planners::Request& req, const Config& cfg, rng::Stream& stream,
           bool record = cfg.dead_end == DeadEnd::dead_angle && path.size() >= 2;
           if (record && cfg.dead_angle_record == DeadAngleRecord::cul_de_sac) {
             std::size_t open = 0;  // allowed moves into cells outside the table (tabu ignored)
-            for (const Arc& arc : arcs) open += dead_table[static_cast<std::size_t>(arc.to)] == 0 ? 1U : 0U;
+            for (int k = 0; k < 8; ++k)
+              if ((mask & (1U << k)) != 0) open += dead_table[static_cast<std::size_t>(target(k))] == 0 ? 1U : 0U;
             record = open <= 1;
           }
           if (record) {
@@ -577,9 +607,10 @@ Run run(const planners::Request& req, const Config& cfg, rng::Stream& stream,
               dead_table[ucur] = 1;
               dead_table_cells.push_back(Json::array({cur_cell.x, cur_cell.y}));
             }
-            for (const Arc& arc : arcs) {
-              const std::size_t in_slot = static_cast<std::size_t>(arc.to) * 8U +
-                                          static_cast<std::size_t>(7 - arc.dir);
+            for (int k = 0; k < 8; ++k) {
+              if ((mask & (1U << k)) == 0) continue;
+              const std::size_t in_slot = static_cast<std::size_t>(target(k)) * 8U +
+                                          static_cast<std::size_t>(7 - k);
               tau[in_slot] = cin::dead_angle_penalty(tau[in_slot], cfg.lambda, cfg.lambda_form);
             }
           }
@@ -612,9 +643,11 @@ Run run(const planners::Request& req, const Config& cfg, rng::Stream& stream,
           k = aco::pseudo_random_choice(weights, q, q0, u).index;
         }
         const std::int64_t next = cand_index[k];
+        const std::size_t grown_from = path.capacity() + touched.capacity();
         path.push_back(next);
         tabu[static_cast<std::size_t>(next)] = 1;
         touched.push_back(next);
+        if (path.capacity() + touched.capacity() != grown_from) check_growth();
       }
       alive[a] = !dead;
       if (!dead) {
@@ -644,6 +677,8 @@ Run run(const planners::Request& req, const Config& cfg, rng::Stream& stream,
       if (lengths[a] > L_A) L_A = lengths[a];
       auto [pos, inserted] = seen.try_emplace(paths[a], out.distinct_paths.size());
       if (inserted) {
+        distinct_bytes = memory::plus(distinct_bytes, distinct_path_bytes(paths[a].size()));
+        check_growth();
         AntPath ap;
         ap.path = to_cells(paths[a]);
         ap.length = lengths[a];
@@ -694,23 +729,29 @@ Run run(const planners::Request& req, const Config& cfg, rng::Stream& stream,
         L_gb = L_n;
       }
       const cin::BestWeights w = cin::best_path_weights(t - 1, N, cfg.weight_norm);
-      std::vector<std::uint8_t> on(tau.size(), 0);  // bit 1: on pi_ib, bit 2: on pi_gb
+      // The marked edges as (slot, bits) sorted by slot, bits OR-ed per slot (bit 1: on pi_ib,
+      // bit 2: on pi_gb): O(path length), not a byte per edge of the grid.
+      std::vector<std::pair<std::size_t, std::uint8_t>> on;
       const auto mark = [&](const std::vector<std::int64_t>& p, std::uint8_t bit) {
         for (std::size_t s = 1; s < p.size(); ++s) {
           const grid::Cell from = g.cell(p[s - 1]);
           const grid::Cell to = g.cell(p[s]);
           const int k = direction(to.x - from.x, to.y - from.y);
-          on[static_cast<std::size_t>(p[s - 1]) * 8U + static_cast<std::size_t>(k)] |= bit;
+          on.emplace_back(static_cast<std::size_t>(p[s - 1]) * 8U + static_cast<std::size_t>(k), bit);
           if (cfg.edge_sense == aco::EdgeSense::undirected)
-            on[static_cast<std::size_t>(p[s]) * 8U + static_cast<std::size_t>(7 - k)] |= bit;
+            on.emplace_back(static_cast<std::size_t>(p[s]) * 8U + static_cast<std::size_t>(7 - k), bit);
         }
       };
       if (survivors > 0) mark(paths[n_ant], 1);
       if (gb != nullptr) mark(*gb, 2);
+      std::sort(on.begin(), on.end());
+      std::size_t next_on = 0;
       for (std::size_t e = 0; e < tau.size(); ++e) {
-        const double d = on[e] == 0 ? 0.0
-                                    : cin::weighted_best_deposit((on[e] & 1U) != 0, w.ib, L_n,
-                                                                 (on[e] & 2U) != 0, w.gb, L_gb, cfg.Q);
+        std::uint8_t bits = 0;
+        while (next_on < on.size() && on[next_on].first == e) bits = static_cast<std::uint8_t>(bits | on[next_on++].second);
+        const double d = bits == 0 ? 0.0
+                                   : cin::weighted_best_deposit((bits & 1U) != 0, w.ib, L_n,
+                                                                (bits & 2U) != 0, w.gb, L_gb, cfg.Q);
         double v = aco::pheromone_update(tau[e], rho, d);
         if (cfg.tau_bounds) v = std::clamp(v, cfg.tau_lower, cfg.tau_upper);
         tau[e] = v;
@@ -732,44 +773,55 @@ Run run(const planners::Request& req, const Config& cfg, rng::Stream& stream,
       }
     }
     // Eq. (5) per slot: aco::total_deposit of the slot's deposits in ant order. The deposits are
-    // bucketed by slot keeping that order (a counting sort: stable), so each slot's group is the
-    // same sequence as before and total_deposit sums it left to right from 0.
-    std::vector<double> delta(tau.size(), 0.0);
-    slot_count.assign(tau.size() + 1, 0);
-    for (const auto& dp : deposits) ++slot_count[dp.first + 1];
-    for (std::size_t e = 0; e < tau.size(); ++e) slot_count[e + 1] += slot_count[e];
+    // sorted by slot keeping that order (a stable sort), so each slot's group is the same
+    // sequence as before and total_deposit sums it left to right from 0. Only the slots with
+    // deposits are held (O(path length), not a delta per edge of the grid: spec "Memory").
+    std::stable_sort(deposits.begin(), deposits.end(),
+                     [](const auto& x, const auto& y) { return x.first < y.first; });
     grouped.resize(deposits.size());
-    slot_fill.assign(slot_count.begin(), slot_count.end() - 1);
-    for (const auto& dp : deposits) grouped[slot_fill[dp.first]++] = dp.second;
-    for (std::size_t e = 0; e < tau.size(); ++e)
-      if (slot_count[e] != slot_count[e + 1])
-        delta[e] = aco::total_deposit(std::span<const double>(grouped).subspan(
-            slot_count[e], slot_count[e + 1] - slot_count[e]));
+    for (std::size_t i = 0; i < deposits.size(); ++i) grouped[i] = deposits[i].second;
+    std::size_t next_dep = 0;
+    // delta of slot e (0 without deposits); called for e ascending.
+    const auto delta_of = [&](std::size_t e) {
+      if (next_dep >= deposits.size() || deposits[next_dep].first != e) return 0.0;
+      const std::size_t from = next_dep;
+      while (next_dep < deposits.size() && deposits[next_dep].first == e) ++next_dep;
+      return aco::total_deposit(std::span<const double>(grouped).subspan(from, next_dep - from));
+    };
 
     if (cfg.deposit == Deposit::ant_cycle) {
-      for (std::size_t e = 0; e < tau.size(); ++e) tau[e] = aco::pheromone_update(tau[e], rho, delta[e]);
+      for (std::size_t e = 0; e < tau.size(); ++e) tau[e] = aco::pheromone_update(tau[e], rho, delta_of(e));
     } else {
-      std::vector<std::uint8_t> on_best(tau.size(), 0);
+      std::vector<std::size_t> on_best;  // the best path's slots, sorted, unique
+      bool all_best = false;
       double bonus = 0.0;
       if (survivors > 0) {
         bonus = aco::elite_bonus(cfg.h, L_a, L_n);
         if (cfg.bonus_edges == BonusEdges::all_edges) {
-          std::fill(on_best.begin(), on_best.end(), std::uint8_t{1});
+          all_best = true;
         } else {
           const auto& p = paths[n_ant];
           for (std::size_t s = 1; s < p.size(); ++s) {
             const grid::Cell from = g.cell(p[s - 1]);
             const grid::Cell to = g.cell(p[s]);
             const int k = direction(to.x - from.x, to.y - from.y);
-            on_best[static_cast<std::size_t>(p[s - 1]) * 8U + static_cast<std::size_t>(k)] = 1;
+            on_best.push_back(static_cast<std::size_t>(p[s - 1]) * 8U + static_cast<std::size_t>(k));
             if (cfg.edge_sense == aco::EdgeSense::undirected)
-              on_best[static_cast<std::size_t>(p[s]) * 8U + static_cast<std::size_t>(7 - k)] = 1;
+              on_best.push_back(static_cast<std::size_t>(p[s]) * 8U + static_cast<std::size_t>(7 - k));
           }
+          std::sort(on_best.begin(), on_best.end());
+          on_best.erase(std::unique(on_best.begin(), on_best.end()), on_best.end());
         }
       }
-      for (std::size_t e = 0; e < tau.size(); ++e)
-        tau[e] = aco::pheromone_update_elite(tau[e], rho, delta[e], on_best[e] != 0 ? bonus : 0.0,
-                                             cfg.tau_min);
+      std::size_t next_best = 0;
+      for (std::size_t e = 0; e < tau.size(); ++e) {
+        bool best_edge = all_best;
+        if (next_best < on_best.size() && on_best[next_best] == e) {
+          best_edge = true;
+          ++next_best;
+        }
+        tau[e] = aco::pheromone_update_elite(tau[e], rho, delta_of(e), best_edge ? bonus : 0.0, cfg.tau_min);
+      }
     }
     }  // deposit modes other than weighted_best
 
@@ -777,6 +829,7 @@ Run run(const planners::Request& req, const Config& cfg, rng::Stream& stream,
     if (survivors > 0 && L_n < best_len) {
       best_len = L_n;
       best_path = paths[n_ant];
+      check_growth();
       best_iteration = t;
       best_ant = static_cast<std::int64_t>(n_ant);
     }

@@ -235,6 +235,15 @@ struct Run {
   std::vector<AntPath> distinct_paths;
 };
 
+/// Bytes per grid cell of a colony run, before its paths (spec shi2022.plan.aco, "Memory"): the
+/// move masks (1), the pheromone of the 8 direction slots (8 x 8), the eta^beta cache (2 x 8),
+/// the tabu and dead-angle flags (1 + 1) and the grid planned on (1).
+inline constexpr std::uint64_t bytes_per_cell = 84;
+/// The colony's need before its paths: cells x bytes_per_cell (saturating). run() refuses with a
+/// UsageError naming it when it exceeds req.max_memory, before allocating, and counts the ants'
+/// walks and stored paths against the same limit as they grow. Spec: shi2022.plan.aco
+[[nodiscard]] std::uint64_t memory_estimate(std::int64_t cells) noexcept;
+
 /// Runs the colony on req.grid from req.start to req.goal under req.policy, drawing from
 /// `stream` (the caller seeds it; run() never creates, copies or reseeds a stream, and consumes
 /// exactly the draws the spec lists). req.params and req.seed are ignored: `config` is used as

@@ -1,4 +1,5 @@
 #include "pathref/planners/astar_kinematic.hpp"
+#include "pathref/planners/search.hpp"
 
 #include <cmath>
 #include <string>
@@ -233,10 +234,12 @@ Planner make_astar_kinematic_planner() {
                     {"secondary_input", "raw"}, {"k", 4},            {"ds", 1.0},
                     {"safety", "ge"},        {"degree", 3},         {"end", "repeated"},
                     {"spacing", 0.1},        {"inflation", 0.0}};
+  p.bytes_per_cell = search::bytes_per_cell;
   p.run = [defaults = p.defaults](const Request& req) {
     if (req.grid == nullptr) throw UsageError("plan request without a grid");
     Json params = merge_params(defaults, req.params);
     const sensors2023::KinematicOptions o = sensors2023::options_from_json(params);
+    search::require_memory(req, *req.grid, "astar-kinematic");
     const sensors2023::KinematicResult k =
         sensors2023::plan_kinematic(*req.grid, req.start, req.goal, req.policy, o);
     Result r;

@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "pathref/core/error.hpp"
+#include "pathref/core/memory.hpp"
 #include "pathref/equations/metrics.hpp"
 #include "pathref/rng/draws.hpp"
 
@@ -616,8 +617,24 @@ InitOutcome initial_population(const grid::Grid& g, grid::Cell start, grid::Cell
                               : initial_paths(g, start, goal, policy, c, stream, count);
 }
 
+std::uint64_t memory_estimate(std::int64_t cells, std::span<const Individual> a, std::span<const Individual> b) {
+  std::uint64_t need = memory::times(static_cast<std::uint64_t>(cells < 0 ? 0 : cells), bytes_per_cell);
+  for (const auto* v : {&a, &b})
+    for (const Individual& ind : *v) need = memory::plus(need, memory::times(ind.path.capacity(), bytes_per_path_cell));
+  return need;
+}
+
+void memory_check(const grid::Grid& g, std::span<const Individual> a, std::span<const Individual> b,
+                  std::uint64_t max_memory, std::string_view when) {
+  const std::uint64_t need = memory_estimate(g.cell_count(), a, b);
+  if (need <= max_memory) return;
+  memory::require_within(need, max_memory,
+                         fmt::format("the GA on a {}x{} grid, with its stored paths {}", g.width(), g.height(), when));
+}
+
 Evolution evolve(const grid::Grid& g, grid::CornerPolicy policy, const Config& c,
-                 rng::Stream& stream, std::vector<Individual> pop, const planners::Interrupt& interrupted) {
+                 rng::Stream& stream, std::vector<Individual> pop, const planners::Interrupt& interrupted,
+                 std::uint64_t max_memory) {
   require(!pop.empty(), "GA: empty population");
   Evolution ev;
   ev.best = pop.front();
@@ -751,6 +768,7 @@ Evolution evolve(const grid::Grid& g, grid::CornerPolicy policy, const Config& c
       pool[a] = make_individual(g, std::move(path), c, Origin::mutation, i);
     }
     pop.swap(pool);
+    memory_check(g, pop, pool, max_memory, fmt::format("after generation {}", i));
     // Step 5: record.
     double sum = 0.0;
     for (const Individual& ind : pop) {
@@ -792,7 +810,8 @@ planners::Result run(const planners::Request& req, const Config& c, rng::Stream&
   std::vector<Individual> pop;
   pop.reserve(init.paths.size());
   for (const auto& p : init.paths) pop.push_back(make_individual(g, p, c, Origin::init, 0));
-  Evolution ev = evolve(g, req.policy, c, stream, std::move(pop), req.interrupted);
+  memory_check(g, pop, {}, req.max_memory, "of the initial population");
+  Evolution ev = evolve(g, req.policy, c, stream, std::move(pop), req.interrupted, req.max_memory);
   r.found = true;
   r.path = ev.best.path;
   r.length = ev.best.length;
@@ -819,6 +838,7 @@ Planner make(const char* name, const char* description, const genetic::Config& b
   p.name = name;
   p.description = description;
   p.defaults = genetic::to_params(base);
+  p.bytes_per_cell = genetic::bytes_per_cell;
   p.run = [defaults = p.defaults, base](const Request& req) {
     const Json params = merge_params(defaults, req.params);
     const genetic::Config c = genetic::from_params(base, params);

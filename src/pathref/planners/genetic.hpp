@@ -280,10 +280,27 @@ struct Evolution {
 /// 5-9) from the given population, drawing from `stream`.
 /// Spec: shi2022.plan.ga, shi2022.plan.iga, shi2022.plan.iha.
 /// Pre: population non-empty, every path valid from start to goal (not checked), c validated.
-/// `interrupted` is asked before every generation (planners::Request::interrupted).
+/// `interrupted` is asked before every generation (planners::Request::interrupted). The stored
+/// paths are counted against `max_memory` after every generation (memory_check; UsageError naming
+/// the estimate and the limit; spec shi2022.plan.ga "Memory").
 [[nodiscard]] Evolution evolve(const grid::Grid& g, grid::CornerPolicy policy, const Config& c,
                                rng::Stream& stream, std::vector<Individual> population,
-                               const planners::Interrupt& interrupted = {});
+                               const planners::Interrupt& interrupted = {},
+                               std::uint64_t max_memory = memory::default_limit);
+
+/// Bytes per grid cell of a GA run before its paths (spec shi2022.plan.ga "Memory"): the grid (1)
+/// and the closed flags of a random walk (1).
+inline constexpr std::uint64_t bytes_per_cell = 2;
+/// Bytes per stored path cell (a grid::Cell of two 64-bit coordinates).
+inline constexpr std::uint64_t bytes_per_path_cell = 16;
+/// cells x bytes_per_cell plus bytes_per_path_cell for every cell of capacity the stored paths
+/// hold (saturating). Spec: shi2022.plan.ga
+[[nodiscard]] std::uint64_t memory_estimate(std::int64_t cells, std::span<const Individual> a,
+                                            std::span<const Individual> b = {});
+/// UsageError when memory_estimate(...) > max_memory, naming both; `when` says at which point
+/// of the run ("after generation 7"). Spec: shi2022.plan.ga
+void memory_check(const grid::Grid& g, std::span<const Individual> a, std::span<const Individual> b,
+                  std::uint64_t max_memory, std::string_view when);
 
 /// A whole single-GA / improved-GA / ga-cin run (spec shi2022.plan.ga / shi2022.plan.iga /
 /// cin2021.plan.ga): initial population, then evolve. Result.extra: best_generation,

@@ -239,7 +239,8 @@ planners::Result run_cin(const planners::Request& req, const CinConfig& c, rng::
     pop.push_back(genetic::make_individual(g, p, c.ga, genetic::Origin::init, 0));
   const auto built = static_cast<std::int64_t>(pop.size());
   Json population = genetic::population_extra(built, built, 0, init);
-  genetic::Evolution ev = genetic::evolve(g, req.policy, c.ga, stream, std::move(pop), req.interrupted);
+  genetic::Evolution ev = genetic::evolve(g, req.policy, c.ga, stream, std::move(pop), req.interrupted,
+                                       req.max_memory);
   // Conversion (Eq. 28): the top elite_share of the last generation by fitness.
   std::vector<double> fit(ev.final_population.size());
   for (std::size_t s = 0; s < fit.size(); ++s) fit[s] = ev.final_population[s].fitness;
@@ -305,7 +306,8 @@ planners::Result run_traditional(const planners::Request& req, const Traditional
     pop.push_back(pop[k % sorted.size()]);
   const auto size = static_cast<std::int64_t>(pop.size());
   Json population = genetic::population_extra(size, from_init, size - from_init, init);
-  const genetic::Evolution ev = genetic::evolve(g, req.policy, c.ga, stream, std::move(pop), req.interrupted);
+  const genetic::Evolution ev = genetic::evolve(g, req.policy, c.ga, stream, std::move(pop), req.interrupted,
+                                       req.max_memory);
   return finish(colony, ev, c.ga, std::move(population), std::move(params), stream);
 }
 
@@ -347,7 +349,8 @@ planners::Result run_improved(const planners::Request& req, const ImprovedConfig
   const auto from_aco = static_cast<std::int64_t>(K);
   Json population = genetic::population_extra(size, size - from_aco, from_aco, init);
   // Steps 6-9: the elitist generation loop.
-  const genetic::Evolution ev = genetic::evolve(g, req.policy, c.ga, stream, std::move(pop), req.interrupted);
+  const genetic::Evolution ev = genetic::evolve(g, req.policy, c.ga, stream, std::move(pop), req.interrupted,
+                                       req.max_memory);
   return finish(colony, ev, c.ga, std::move(population), std::move(params), stream);
 }
 
@@ -363,6 +366,7 @@ Planner make_hybrid_ga_aco_planner() {
       "then a GA seeded with the ant paths, spec/shi2022-ga.md";
   const hybrid::TraditionalConfig base;
   p.defaults = hybrid::to_params(base);
+  p.bytes_per_cell = ant_colony::bytes_per_cell;  // the colony's per-cell state; the GA's is less
   p.run = [defaults = p.defaults, base](const Request& req) {
     const Json params = merge_params(defaults, req.params);
     const hybrid::TraditionalConfig c = hybrid::from_params(base, params);
@@ -381,6 +385,7 @@ Planner make_hga_aco_cin_planner() {
       "weighted best deposits and the dead-angle table), spec/cin2021-hga-aco.md";
   const hybrid::CinConfig base;
   p.defaults = hybrid::to_params(base);
+  p.bytes_per_cell = ant_colony::bytes_per_cell;  // the colony's per-cell state; the GA's is less
   p.run = [defaults = p.defaults, base](const Request& req) {
     const Json params = merge_params(defaults, req.params);
     const hybrid::CinConfig c = hybrid::from_params(base, params);
@@ -401,6 +406,7 @@ Planner make_iha_planner() {
       "deletion operator, elite retention, adaptive Pc/Pm), spec/shi2022-ga.md";
   const hybrid::ImprovedConfig base;
   p.defaults = hybrid::to_params(base);
+  p.bytes_per_cell = ant_colony::bytes_per_cell;  // the colony's per-cell state; the GA's is less
   p.run = [defaults = p.defaults, base](const Request& req) {
     const Json params = merge_params(defaults, req.params);
     const hybrid::ImprovedConfig c = hybrid::from_params(base, params);

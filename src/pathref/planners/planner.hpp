@@ -12,6 +12,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "pathref/core/memory.hpp"
 #include "pathref/grid/grid.hpp"
 
 namespace pathref::search {
@@ -54,6 +55,11 @@ struct Request {
   /// returns true the run stops by throwing pathref::Interrupted (the Python module's Ctrl-C).
   /// Empty: never asked. Asking draws nothing and changes no result.
   Interrupt interrupted;
+  /// The memory limit of the run in bytes (spec/cli.md#memory; `--max-memory`): a planner
+  /// estimates its need from the grid before allocating, counts its stored paths as they grow,
+  /// and throws UsageError naming the estimate and this limit when it would exceed it. The
+  /// limit changes no result of a run that stays within it.
+  std::uint64_t max_memory = memory::default_limit;
 };
 
 struct Result {
@@ -73,6 +79,10 @@ struct Planner {
   std::string description;  ///< one line, with the paper it follows
   Json defaults;            ///< parameter name -> default value
   std::function<Result(const Request&)> run;
+  /// Bytes per grid cell a run needs before its paths, the grid included (spec/cli.md#memory,
+  /// each planner's "Memory"): `plan` and `scen` give it to the map reader, which refuses a map
+  /// whose W x H x bytes_per_cell exceeds --max-memory before allocating its grid.
+  std::uint64_t bytes_per_cell = 1;
 };
 
 /// Every registered planner, sorted by name.

@@ -8,7 +8,10 @@
 #include <optional>
 #include <type_traits>
 
+#include <fmt/core.h>
+
 #include "pathref/core/error.hpp"
+#include "pathref/core/memory.hpp"
 
 namespace pathref::search {
 
@@ -504,6 +507,18 @@ StepCounts step_counts(std::span<const grid::Cell> path) {
   return s;
 }
 
+std::uint64_t memory_estimate(std::int64_t cells) noexcept {
+  return memory::times(static_cast<std::uint64_t>(cells < 0 ? 0 : cells), bytes_per_cell);
+}
+
+/// Refuses a search whose per-cell arrays would exceed the request's memory limit (UsageError
+/// naming the estimate and the limit), before they are allocated. Spec: search.astar ("Memory")
+void require_memory(const planners::Request& req, const grid::Grid& g, std::string_view planner) {
+  memory::require_within(memory_estimate(g.cell_count()), req.max_memory,
+                         fmt::format("{} on a {}x{} grid ({} bytes per cell)", planner, g.width(), g.height(),
+                                     bytes_per_cell));
+}
+
 }  // namespace pathref::search
 
 namespace pathref::planners {
@@ -535,10 +550,12 @@ Planner make_astar_planner() {
       "A* (Hart, Nilsson & Raphael 1968; Han Eq. 8 with heuristic=chebyshev), tie-break (f, h, "
       "cell index), spec/search.md";
   p.defaults = Json{{"heuristic", "octile"}};
+  p.bytes_per_cell = search::bytes_per_cell;
   p.run = [defaults = p.defaults](const Request& req) {
     const grid::Grid& g = grid_of(req);
     Json params = merge_params(defaults, req.params);
     const auto h = heuristics::parse_heuristic(params.at("heuristic").get<std::string>());
+    search::require_memory(req, g, "astar");
     Json extra = {{"admissible", heuristics::admissible(h, req.policy)},
                   {"consistent", heuristics::consistent(h, req.policy)}};
     search::Outcome o = req.workspace != nullptr
@@ -554,9 +571,11 @@ Planner make_dijkstra_planner() {
   p.name = "dijkstra";
   p.description = "Dijkstra (1959): A* with h = 0, tie-break (g, cell index), spec/search.md";
   p.defaults = Json::object();
+  p.bytes_per_cell = search::bytes_per_cell;
   p.run = [defaults = p.defaults](const Request& req) {
     const grid::Grid& g = grid_of(req);
     Json params = merge_params(defaults, req.params);
+    search::require_memory(req, g, "dijkstra");
     search::Outcome o = req.workspace != nullptr
                             ? search::dijkstra(*req.workspace, g, req.start, req.goal, req.policy)
                             : search::dijkstra(g, req.start, req.goal, req.policy);

@@ -12,6 +12,7 @@
 #include <functional>
 #include <memory>
 #include <span>
+#include <string_view>
 #include <vector>
 
 #include "pathref/equations/heuristics.hpp"
@@ -81,6 +82,19 @@ class Workspace {
   std::unique_ptr<Impl> impl_;
   friend Impl& access(Workspace& w) noexcept;
 };
+
+/// Bytes per grid cell of one search (spec/search.md "Memory"): the per-cell g, parent and mark
+/// (16), the move-mask cache (2), the workspace's copy of the grid the masks belong to (1) and
+/// the grid searched (1). The open list (24 bytes per entry, 16 for Dijkstra) comes on top: one
+/// entry per generated improvement, not estimated.
+inline constexpr std::uint64_t bytes_per_cell = 20;
+/// cells x bytes_per_cell (saturating): what the astar, dijkstra and astar-kinematic planners
+/// check against Request::max_memory before their per-cell arrays are allocated (UsageError
+/// naming the estimate and the limit). Spec: search.astar
+[[nodiscard]] std::uint64_t memory_estimate(std::int64_t cells) noexcept;
+/// UsageError when memory_estimate(g.cell_count()) > req.max_memory, naming `planner`, the
+/// estimate and the limit. Spec: search.astar
+void require_memory(const planners::Request& req, const grid::Grid& g, std::string_view planner);
 
 /// A* from start to goal under `policy` with heuristic `h` (spec rule search.astar).
 /// Source: Hart, Nilsson & Raphael (1968), doi:10.1109/TSSC.1968.300136; Han (IJACSA) Eq. (8).

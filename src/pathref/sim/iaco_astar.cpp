@@ -1,5 +1,6 @@
 #include "pathref/sim/iaco_astar.hpp"
 
+#include <algorithm>
 #include <string>
 #include <string_view>
 
@@ -25,6 +26,7 @@ Planner make_iaco_astar_planner(std::span<const Planner> others) {
   p.defaults = Json{{"global", std::string(default_global)}};
   for (const Planner& o : others) {
     if (o.name == self_name) continue;
+    p.bytes_per_cell = std::max(p.bytes_per_cell, o.bytes_per_cell);  // the largest global planner's
     for (const auto& [k, v] : o.defaults.items()) p.defaults[global_param_name(o.name, k)] = v;
   }
   p.run = [defaults = p.defaults](const Request& req) {
