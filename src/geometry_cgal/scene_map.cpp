@@ -9,6 +9,7 @@
 
 #include "pathref/core/error.hpp"
 #include "pathref/core/memory.hpp"
+#include "geometry_cgal/scene_map.hpp"
 #include "pathref/geometry/inflation.hpp"
 #include "pathref/io/map_file.hpp"
 

@@ -15,6 +15,7 @@
 #include "pathref/io/json_text.hpp"
 #include "pathref/core/error.hpp"
 #include "pathref/core/version.hpp"
+#include "geometry_cgal/scene_map.hpp"
 #include "pathref/geometry/inflation.hpp"
 #include "pathref/geometry/obstacles.hpp"
 #include "pathref/golden/runner.hpp"

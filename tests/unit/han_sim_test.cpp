@@ -13,7 +13,7 @@
 #include "pathref/io/svg_sim.hpp"
 #include "pathref/planners/planner.hpp"
 #include "pathref/sim/encounter.hpp"
-#include "pathref/sim/iaco_astar.hpp"
+#include "pathref/planners/iaco_astar.hpp"
 #include "pathref/sim/motion.hpp"
 #include "pathref/sim/random_map.hpp"
 #include "pathref/sim/simulate.hpp"

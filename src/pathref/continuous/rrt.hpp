@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "pathref/continuous/kdtree.hpp"
+#include "pathref/geometry/collision.hpp"
 
 namespace pathref::rng {
 class Stream;
@@ -20,25 +21,8 @@ class Stream;
 
 namespace pathref::continuous {
 
-/// What a continuous planner asks of the map. Implementations must be exact or conservative;
-/// ObstacleMap is exact (spec r[cin2021.srrt.collision]).
-class CollisionChecker {
- public:
-  virtual ~CollisionChecker() = default;
-  /// True iff the point lies in the world rectangle and outside every inflated obstacle.
-  [[nodiscard]] virtual bool point_free(Vec2 p) const = 0;
-  /// True iff every point of the closed segment [a, b] is free (a == b: point_free(a)).
-  [[nodiscard]] virtual bool segment_free(Vec2 a, Vec2 b) const = 0;
-  /// The world rectangle: sampling region of Algorithm 1 (xmin < xmax, ymin < ymax).
-  [[nodiscard]] virtual Vec2 lower() const = 0;
-  [[nodiscard]] virtual Vec2 upper() const = 0;
-  /// Distance from the closed segment to the nearest obstacle (without the inflation r; +inf
-  /// without obstacles), for reports. Spec: cin2021.srrt.metrics.
-  [[nodiscard]] virtual double segment_clearance(Vec2 a, Vec2 b) const = 0;
-  /// The inflation radius r (robot radius + margin) rounded to a double: a point within r of an
-  /// obstacle is not free. For reports and the smoothed curve's verdict (spec cin2021.srrt.curve).
-  [[nodiscard]] virtual double inflation() const = 0;
-};
+/// What a continuous planner asks of the map (geometry/collision.hpp).
+using CollisionChecker = geometry::CollisionChecker;
 
 /// Steer(x_near, x_target, delta): the point delta away from x_near towards x_target.
 /// With dx = t.x - n.x, dy = t.y - n.y, d = sqrt(dx*dx + dy*dy) and s = delta / d:

@@ -8,7 +8,7 @@
 
 #include "pathref/core/error.hpp"
 #include "pathref/geometry/clearance.hpp"
-#include "pathref/sim/encounter.hpp"
+#include "pathref/geometry/segment_distance.hpp"
 
 namespace pathref::dwa {
 
@@ -36,7 +36,7 @@ E parse_option(std::string_view s, std::initializer_list<std::pair<std::string_v
   throw UsageError(std::string(name) + " must be one of " + names + ", got '" + std::string(s) + "'");
 }
 
-sim::Vec2 vec(Point p) noexcept { return sim::Vec2{p.x, p.y}; }
+geometry::Vec2 vec(Point p) noexcept { return geometry::Vec2{p.x, p.y}; }
 
 }  // namespace
 
@@ -493,12 +493,12 @@ double segment_cell_distance(Point a, Point b, grid::Cell c) noexcept {
   const double x1 = x0 + 1.0, y1 = y0 + 1.0;
   auto inside = [&](Point p) { return p.x >= x0 && p.x <= x1 && p.y >= y0 && p.y <= y1; };
   if (inside(a) || inside(b)) return 0.0;
-  const sim::Vec2 A = vec(a), B = vec(b);
-  const sim::Vec2 c00{x0, y0}, c10{x1, y0}, c11{x1, y1}, c01{x0, y1};
-  double m = sim::segment_distance(A, B, c00, c10);
-  m = std::min(m, sim::segment_distance(A, B, c10, c11));
-  m = std::min(m, sim::segment_distance(A, B, c11, c01));
-  m = std::min(m, sim::segment_distance(A, B, c01, c00));
+  const geometry::Vec2 A = vec(a), B = vec(b);
+  const geometry::Vec2 c00{x0, y0}, c10{x1, y0}, c11{x1, y1}, c01{x0, y1};
+  double m = geometry::segment_distance(A, B, c00, c10);
+  m = std::min(m, geometry::segment_distance(A, B, c10, c11));
+  m = std::min(m, geometry::segment_distance(A, B, c11, c01));
+  m = std::min(m, geometry::segment_distance(A, B, c01, c00));
   return m;
 }
 

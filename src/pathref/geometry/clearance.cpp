@@ -4,7 +4,6 @@
 #include <cmath>
 #include <limits>
 
-#include "pathref/continuous/rrt.hpp"
 #include "pathref/core/error.hpp"
 
 namespace pathref::geometry {
@@ -196,7 +195,7 @@ Clearance clearance(const grid::Grid& g, std::span<const Vec2> points,
   return clearance_of(points, options, segment_distance, point_distance);
 }
 
-Clearance clearance(const continuous::CollisionChecker& map, std::span<const Vec2> points,
+Clearance clearance(const CollisionChecker& map, std::span<const Vec2> points,
                     const ClearanceOptions& options) {
   const Vec2 lo = map.lower();
   const Vec2 hi = map.upper();

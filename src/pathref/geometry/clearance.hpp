@@ -27,9 +27,7 @@
 #include "pathref/geometry/vec2.hpp"
 #include "pathref/grid/grid.hpp"
 
-namespace pathref::continuous {
-class CollisionChecker;
-}
+#include "pathref/geometry/collision.hpp"
 
 namespace pathref::geometry {
 
@@ -99,7 +97,7 @@ struct Clearance {
 /// those of the grid variant (the same code). Source: pathref. Spec: curves.polygon-clearance.
 /// Pre: as the grid variant (DomainError). Post: 0 <= lower <= distance <= upper.
 /// Golden: golden/curves/curves.polygon-clearance.json
-[[nodiscard]] Clearance clearance(const continuous::CollisionChecker& map,
+[[nodiscard]] Clearance clearance(const CollisionChecker& map,
                                   std::span<const Vec2> points,
                                   const ClearanceOptions& options = {});
 

@@ -14,8 +14,6 @@
 
 #include "pathref/geometry/scene.hpp"
 #include "pathref/grid/grid.hpp"
-#include "pathref/io/grid_text.hpp"
-#include "pathref/io/map_file.hpp"
 
 namespace pathref::geometry {
 
@@ -63,15 +61,6 @@ struct InflatedScene {
 /// given, inside the grid, not blocked, and distinct. Spec: inflation.scene.
 /// Throws DomainError ("/start: ...", "/goal: ..."). Golden: golden/inflation/inflation.scene.json
 [[nodiscard]] InflatedScene inflate_scene(const Scene& scene);
-
-/// A scene file's text as a map (what `pathref plan --map FILE.json` and `convert` read; the
-/// io::MapReadOptions::scene_to_map hook): parse_scene_json, then the scene's width and height
-/// are checked against `limits` before any grid is allocated (ParseError `FILE:0:0: /width: a
-/// WxH grid exceeds the limit of N cells per side` or `... of N cells`), then inflate_scene; its
-/// DomainErrors are reported as `FILE: /start: ...` (naming the file). The map's name is the
-/// scene's. Spec: spec/formats.md#polygon-scene-json ("As a map"), inflation.scene.
-[[nodiscard]] io::MapFile scene_map(std::string_view text, const std::string& filename,
-                                    const io::ReadLimits& limits);
 
 /// UsageError `FILE: the scene's WxH world (B bytes per cell...) needs an estimated N bytes ...,
 /// more than the memory limit of L bytes ...` when width x height x bytes_per_cell exceeds

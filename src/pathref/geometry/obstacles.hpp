@@ -11,7 +11,7 @@
 #include <memory>
 #include <vector>
 
-#include "pathref/continuous/rrt.hpp"
+#include "pathref/geometry/collision.hpp"
 #include "pathref/geometry/scene.hpp"
 #include "pathref/grid/grid.hpp"
 
@@ -21,7 +21,7 @@ namespace pathref::geometry {
 
 /// Obstacle polygons (exact vertices) with an exact inflation radius r, in a world rectangle.
 /// Immutable; copies share the prepared geometry.
-class ObstacleMap final : public continuous::CollisionChecker {
+class ObstacleMap final : public CollisionChecker {
  public:
   /// The scene's polygons (validate_polygons runs: DomainError for degenerate or self-intersecting
   /// ones), r = radius + margin, world [ox, ox + W s] x [oy, oy + H s].

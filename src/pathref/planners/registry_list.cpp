@@ -5,7 +5,7 @@
 #include "pathref/planners/ant_colony.hpp"
 #include "pathref/planners/genetic.hpp"
 #include "pathref/planners/hybrid.hpp"
-#include "pathref/sim/iaco_astar.hpp"
+#include "pathref/planners/iaco_astar.hpp"
 
 namespace pathref::planners {
 std::vector<Planner> all_planners() {

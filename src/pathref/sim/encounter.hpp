@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "pathref/equations/rls.hpp"
+#include "pathref/geometry/segment_distance.hpp"
 #include "pathref/geometry/vec2.hpp"
 #include "pathref/grid/grid.hpp"
 
@@ -26,22 +27,11 @@ using Vec2 = geometry::Vec2;  // the project-wide plane point (geometry/vec2.hpp
 /// Centre of a cell with 1 m cells: (x + 0.5, y + 0.5). Spec: han.sim.step (grid.coord).
 [[nodiscard]] Vec2 centre(grid::Cell c) noexcept;
 
-/// Distance from p to the segment [a, b]: with d = b - a, L = (d.x*d.x) + (d.y*d.y); s = 0 if
-/// L == 0, else s = clamp((((p.x - a.x)*d.x) + ((p.y - a.y)*d.y)) / L, 0, 1); q = (a.x + (s*d.x),
-/// a.y + (s*d.y)); result sqrt(((p.x-q.x)*(p.x-q.x)) + ((p.y-q.y)*(p.y-q.y))).
-/// Source: pathref. Spec: han.collision.classify. Pre: none (finite inputs give a finite result).
-[[nodiscard]] double point_segment_distance(Vec2 p, Vec2 a, Vec2 b) noexcept;
-
-/// Distance from p to the ray from a through b (the obstacle's whole predicted future path): as
-/// point_segment_distance but s is clamped to [0, +inf) only (b == a: the distance to a).
-/// Source: pathref. Spec: han.collision.classify. Pre: none.
-[[nodiscard]] double point_ray_distance(Vec2 p, Vec2 a, Vec2 b) noexcept;
-
-/// Distance between segments [a, b] and [c, d]: 0 if they cross properly (the orientation signs
-/// of c, d about ab differ strictly and those of a, b about cd too), else the minimum of
-/// dist(a, cd), dist(b, cd), dist(c, ab), dist(d, ab) in that order.
-/// Source: pathref. Spec: han.collision.classify.
-[[nodiscard]] double segment_distance(Vec2 a, Vec2 b, Vec2 c, Vec2 d) noexcept;
+// The planar distances of Fig. 5's test live in geometry (geometry/segment_distance.hpp), so the
+// dynamic window's equations can use them without reaching up into the simulator.
+using geometry::point_ray_distance;
+using geometry::point_segment_distance;
+using geometry::segment_distance;
 
 /// The three outcomes of Fig. 5.
 enum class Encounter { none, side, frontal };

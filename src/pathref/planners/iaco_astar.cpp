@@ -1,4 +1,4 @@
-#include "pathref/sim/iaco_astar.hpp"
+#include "pathref/planners/iaco_astar.hpp"
 
 #include <algorithm>
 #include <string>
