@@ -8,6 +8,7 @@
 
 #include "pathref/core/error.hpp"
 #include "pathref/geometry/inflation.hpp"
+#include "pathref/io/json_text.hpp"
 #include "pathref/io/map_file.hpp"
 
 namespace pathref::geometry {
@@ -26,12 +27,11 @@ io::MapFile scene_map(std::string_view text, const std::string& filename, const 
   const std::int64_t w = scene.width;
   const std::int64_t h = scene.height;
   if (w > limits.max_side || h > limits.max_side)
-    throw ParseError(filename, 0, 0,
-                     fmt::format("/{}: a {}x{} grid exceeds the limit of {} cells per side",
-                                 w > limits.max_side ? "width" : "height", w, h, limits.max_side));
+    throw io::json_error_at(text, filename, w > limits.max_side ? "/width" : "/height",
+                            fmt::format("a {}x{} grid exceeds the limit of {} cells per side", w, h, limits.max_side));
   if (w > limits.max_cells / h)
-    throw ParseError(filename, 0, 0, fmt::format("/width: a {}x{} grid exceeds the limit of {} cells", w, h,
-                                                 limits.max_cells));
+    throw io::json_error_at(text, filename, "/width",
+                            fmt::format("a {}x{} grid exceeds the limit of {} cells", w, h, limits.max_cells));
   InflatedScene inf = inflate_scene_file(scene, filename);
   return io::MapFile{std::move(inf.grid), inf.start, inf.goal, scene.name};
 }

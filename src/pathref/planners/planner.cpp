@@ -26,6 +26,24 @@ const Planner* find_planner(std::string_view name) {
   return nullptr;
 }
 
+std::string planner_names() {
+  std::string known;
+  for (const Planner& p : planners()) known += (known.empty() ? "" : ", ") + p.name;
+  return known;
+}
+
+std::optional<std::pair<std::string, std::string>> first_bad_param(const Planner& p, const Json& params) {
+  if (!params.is_object()) return std::nullopt;
+  for (const auto& [k, v] : params.items()) {
+    try {
+      (void)merge_params(p.defaults, Json{{k, v}});
+    } catch (const UsageError& e) {
+      return std::make_pair(k, std::string(e.what()));
+    }
+  }
+  return std::nullopt;
+}
+
 Json merge_params(const Json& defaults, const Json& overrides) {
   Json out = defaults;
   for (const auto& [k, v] : overrides.items()) {

@@ -16,6 +16,7 @@
 #include "pathref/grid/json_codec.hpp"
 #include "pathref/io/map_file.hpp"
 #include "pathref/planners/planner.hpp"
+#include "pathref/sim/simulate.hpp"
 
 namespace pathref::dwa {
 
@@ -171,6 +172,7 @@ FusedScenario read_scenario(const Reader& rd, const Json& doc, const std::string
   if (const Json* v = find(doc, "planner")) {
     if (v->is_string()) {
       s.planner = v->get<std::string>();
+      sim::check_planner(rd, s.planner, s.planner_params, "/planner");
     } else {
       rd.keys(*v, "/planner", {"name", "params"});
       const Json* n = find(*v, "name");
@@ -180,6 +182,7 @@ FusedScenario read_scenario(const Reader& rd, const Json& doc, const std::string
         if (!p->is_object()) rd.fail("/planner/params", "expected an object");
         s.planner_params = *p;
       }
+      sim::check_planner(rd, s.planner, s.planner_params, "/planner/name");
     }
   }
   if (const Json* v = find(doc, "seed")) s.seed = static_cast<std::uint32_t>(rd.integer(*v, "/seed", 0, 4294967295LL));

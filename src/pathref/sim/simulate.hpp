@@ -17,6 +17,7 @@
 #include <nlohmann/json.hpp>
 
 #include "pathref/grid/grid.hpp"
+#include "pathref/io/json_reader.hpp"
 #include "pathref/sim/encounter.hpp"
 
 namespace pathref::sim {
@@ -68,6 +69,12 @@ inline constexpr std::int64_t max_sim_steps = 1000000;
 /// byte; then scenario_from_json. Spec: han.sim.scenario-format.
 [[nodiscard]] Scenario parse_scenario(std::string_view text, std::string_view file,
                                       const std::string& base_dir);
+
+/// The global planner of a scenario (pathref-sim 1 and 2): `name` a registered planner (refused at
+/// `name_ptr`, /planner or /planner/name) and every key of `params` one it takes with a value of
+/// its default's type (refused at /planner/params/KEY). Values a planner refuses only when it runs
+/// (a number out of its range) are reported by the run, with the planner's message.
+void check_planner(const io::JsonReader& rd, const std::string& name, const Json& params, const std::string& name_ptr);
 
 /// The robot's state in one trajectory sample: moving on its plan, waiting, moving on an evasion
 /// plan towards a refuge (han.sim.evade), or arrived at the goal.
