@@ -187,6 +187,12 @@ TEST_CASE("formats.scene: reader errors carry a JSON pointer", "[inflation][form
   CHECK(parse_error(head + R"("polygons": [], "radius": 1})") .find("duplicate key \"radius\"") != std::string::npos);
   CHECK(parse_error(R"({"format": "pathref-scene 1", "origin": [0, 0], "width": 4.0, "height": 4, "cell_size": 1, "radius": 0, "margin": 0, "polygons": [], "start": [0, 0], "goal": [1, 1]})") ==
         "s.json:0:0: /width: expected an integer in [1, 268435456], got a non-integer number");
+  // width or height 0 (a JSON unsigned integer): refused at its value, not later as "start ... is
+  // not free" or a DomainError without a pointer (issue 27)
+  CHECK(parse_error(R"({"format": "pathref-scene 1", "origin": [0, 0], "width": 0, "height": 4, "cell_size": 1, "radius": 0, "margin": 0, "polygons": [], "start": [0, 0], "goal": [1, 1]})") ==
+        "s.json:1:58: /width: expected an integer in [1, 268435456], got 0");
+  CHECK(parse_error(R"({"format": "pathref-scene 1", "origin": [0, 0], "width": 4, "height": 0, "cell_size": 1, "radius": 0, "margin": 0, "polygons": [], "start": [0, 0], "goal": [1, 1]})") ==
+        "s.json:1:71: /height: expected an integer in [1, 268435456], got 0");
   CHECK(parse_error(R"({"format": "pathref-scene 1", "origin": [0, 0], "width": 4, "height": 4, "cell_size": 0, "radius": 0, "margin": 0, "polygons": [], "start": [0, 0], "goal": [1, 1]})") ==
         "s.json:0:0: /cell_size: expected a number > 0, got 0");
   CHECK(parse_error(R"({"format": "pathref-scene 1", "origin": [0, 0], "width": 4, "height": 4, "cell_size": 1, "radius": -0.1, "margin": 0, "polygons": [], "start": [0, 0], "goal": [1, 1]})") ==

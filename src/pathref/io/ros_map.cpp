@@ -27,7 +27,7 @@ std::string describe_byte(char c) {
 }
 
 /// 1-based line and column of byte `offset` in `text` (lines end at LF; columns count bytes).
-std::pair<std::size_t, std::size_t> line_column(std::string_view text, std::size_t offset) {
+std::pair<std::size_t, std::size_t> byte_line_column(std::string_view text, std::size_t offset) {
   std::size_t line = 1;
   std::size_t line_start = 0;
   const std::size_t end = std::min(offset, text.size());
@@ -55,7 +55,7 @@ class PgmReader {
   PgmReader(std::string_view bytes, std::string file) : b_(bytes), file_(std::move(file)) {}
 
   [[noreturn]] void fail_at(std::size_t offset, const std::string& message) const {
-    const auto [line, column] = line_column(b_, offset);
+    const auto [line, column] = byte_line_column(b_, offset);
     throw ParseError(file_, line, column, message);
   }
 
@@ -138,7 +138,7 @@ PgmImage parse_pgm(std::string_view bytes, std::string_view filename) {
   img.height = h.value;
   img.maxval = static_cast<std::uint32_t>(m.value);
   {
-    const auto [line, column] = line_column(bytes, m.offset);
+    const auto [line, column] = byte_line_column(bytes, m.offset);
     img.maxval_line = line;
     img.maxval_column = column;
   }
