@@ -163,16 +163,16 @@ TEST_CASE("cin2021.knn: a squared distance that overflows is outside the domain"
   m.k = 1;
   m.train.features = 1;
   m.train.classes = 2;
-  m.train.x = {-1e308, 1.0};
+  m.train.x = {-1e140, 1e140};
   m.train.y = {0, 1};
-  // finite inputs: 1e308 - (-1e308) overflows to inf (was: "knn_vote: distances must be >= 0")
+  // finite inputs: (1e308 + 1e140)^2 overflows to inf (was: "knn_vote: distances must be >= 0")
   const std::vector<double> big{1e308};
   CHECK(message_of([&] { (void)ml::predict(m, big); })
             .find("KNN: the squared distance from the sample to training row 0 overflows") == 0);
-  // weight 0 times an infinite difference is NaN, which must never reach the ordering
+  // weight 0 times an infinite square is NaN, which must never reach the ordering
   m.weights = {0.0};
   CHECK(message_of([&] { (void)ml::predict(m, big); }).find("training row 0 overflows") != std::string::npos);
-  // large but finite squared distances are ordered as usual
+  // large but finite squared distances are ordered as usual: (1e150 - 1e140)^2 < (1e150 + 1e140)^2
   m.weights.clear();
   const std::vector<double> x{1e150};
   CHECK(ml::predict(m, x) == 1);
