@@ -108,6 +108,8 @@ expect_error '{"format": "pathref-sim 1", "map": ["...."], "start": [0,0], "goal
   'bad.json:1:93: /path/1: expected a free cell one step from (0, 0) allowed under the corner policy strict, got (2, 0)'
 expect_error '{"format": "pathref-sim 1", "map": ["...."], "start": [0,0], "goal": [3,0], "planner": {"name": "astar", "params": {"weight": 2}}}' \
   "bad.json:1:[0-9]*: /planner/params/weight: expected a parameter of astar: unknown parameter 'weight' (known: heuristic)"
+expect_error '{"format": "pathref-sim 1", "map": ["...."], "start": [0,0], "goal": [3,0], "planner": {"name": "iaco-han", "params": {"ants": -3}}}' \
+  'bad.json:1:[0-9]*: /planner/params: the planner iaco-han refused its parameters: ant colony: ants must be in'
 expect_error '{"format": "pathref-sim 1", "map": ["...."], "start": [0,0], "goal": [3,0], "planner": {"name": "astarr"}}' \
   '/planner/name: expected a planner name'
 set +e; "$pathref" simulate --planner nope tests/data/sim/none.json 2>"$tmp/err.txt" >/dev/null; rc=$?; set -e

@@ -242,6 +242,11 @@ TEST_CASE("han.sim.scenario-format: path steps, the planner and its parameters a
   CHECK(error(R"("planner": {"name": "astar", "params": {"heuristic": 1}}})")
             .find("/planner/params/heuristic: expected a parameter of astar: parameter 'heuristic' must be of the same "
                   "type as its default \"octile\"") != std::string::npos);
+  // a value the planner refuses only when it runs: at /planner/params with line and column
+  const sim::Scenario bad_value =
+      sim::parse_scenario(head + R"("planner": {"name": "astar", "params": {"heuristic": "nope"}}})", "s.json", "");
+  CHECK(message_of([&] { (void)sim::global_path(bad_value); })
+            .find("s.json:1:126: /planner/params: the planner astar refused its parameters: unknown heuristic 'nope'") == 0);
   // pathref-sim 2 shares the planner check
   const std::string fused = R"({"format": "pathref-sim 2", "map": ["....", "...."], "start": [0, 0], "goal": [3, 0], "planner": {"name": "astar", "params": {"bogus": 1}}})";
   CHECK(message_of([&] { (void)dwa::parse_fused_scenario(fused, "f.json", ""); })

@@ -1,8 +1,10 @@
 #include "pathref/planners/planner.hpp"
+#include "pathref/planners/params_source.hpp"
 
 #include <algorithm>
 
 #include "pathref/core/error.hpp"
+#include "pathref/io/json_text.hpp"
 #include "pathref/planners/registry_list.hpp"
 
 namespace pathref::planners {
@@ -42,6 +44,31 @@ std::optional<std::pair<std::string, std::string>> first_bad_param(const Planner
     }
   }
   return std::nullopt;
+}
+
+ParamsSource params_source(std::string_view text, std::string_view file, const std::string& pointer) {
+  ParamsSource out{std::string(file), 0, 0, pointer};
+  if (!text.empty()) {
+    const auto [line, column] = io::line_column(text, io::pointer_offset(text, pointer));
+    out.line = line;
+    out.column = column;
+  }
+  return out;
+}
+
+Result run_with_params_from(const Planner& p, const Request& req, const std::optional<ParamsSource>& source) {
+  if (!source || req.params.empty()) return p.run(req);
+  const auto located = [&](const Error& e) {
+    const std::string what = source->pointer + ": the planner " + p.name + " refused its parameters: " + e.what();
+    return source->line == 0 ? ParseError(source->file, what) : ParseError(source->file, source->line, source->column, what);
+  };
+  try {
+    return p.run(req);
+  } catch (const UsageError& e) {
+    throw located(e);
+  } catch (const DomainError& e) {
+    throw located(e);
+  }
 }
 
 Json merge_params(const Json& defaults, const Json& overrides) {

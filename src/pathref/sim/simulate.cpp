@@ -97,7 +97,7 @@ Scenario read_scenario(const Json& doc, std::string_view file, std::string_view 
   const Json* fmtv = find(doc, "format");
   if (fmtv == nullptr) rd.fail("/format", "missing (expected \"pathref-sim 1\")");
   if (rd.string(*fmtv, "/format") != "pathref-sim 1")
-    rd.fail("/format", "expected \"pathref-sim 1\", got " + fmtv->dump());
+    rd.fail("/format", "expected \"pathref-sim 1\", got \"" + io::printable(fmtv->get<std::string>()) + "\"");
   // --- map
   const Json* mapv = find(doc, "map");
   if (mapv == nullptr) rd.fail("/map", "missing (expected a map file name, rows or {\"random\": ...})");
@@ -175,7 +175,7 @@ Scenario read_scenario(const Json& doc, std::string_view file, std::string_view 
     try {
       s.policy = grid::parse_corner_policy(rd.string(*v, "/policy"));
     } catch (const UsageError&) {
-      rd.fail("/policy", "expected never, strict, one or always, got " + v->dump());
+      rd.fail("/policy", "expected never, strict, one or always, got \"" + io::printable(v->get<std::string>()) + "\"");
     }
   }
   if (const Json* v = find(doc, "path")) {
@@ -239,7 +239,9 @@ Scenario read_scenario(const Json& doc, std::string_view file, std::string_view 
 
 Scenario parse_scenario(std::string_view text, std::string_view file, const std::string& base_dir) {
   const Json doc = io::parse_json_text(text, file);
-  return read_scenario(doc, file, text, base_dir);
+  Scenario s = read_scenario(doc, file, text, base_dir);
+  if (!s.planner_params.empty()) s.planner_params_at = planners::params_source(text, file, "/planner/params");
+  return s;
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -374,7 +376,7 @@ GlobalPath global_path(const Scenario& s) {
   req.policy = s.policy;
   req.seed = s.seed;
   req.params = s.planner_params;
-  const planners::Result r = p->run(req);
+  const planners::Result r = planners::run_with_params_from(*p, req, s.planner_params_at);
   out.found = r.found;
   out.path = r.path;
   out.length = r.found ? path_length(r.path) : 0.0;

@@ -10,6 +10,7 @@
 /// Spec: spec/han-sim.md (han.sim.scenario-format, han.sim.step, han.sim.wait, han.sim.detour,
 /// han.sim.run)
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -18,6 +19,7 @@
 
 #include "pathref/grid/grid.hpp"
 #include "pathref/io/json_reader.hpp"
+#include "pathref/planners/params_source.hpp"
 #include "pathref/sim/encounter.hpp"
 
 namespace pathref::sim {
@@ -40,6 +42,8 @@ struct Scenario {
   std::vector<grid::Cell> path;      ///< explicit global path; empty: from `planner`
   std::string planner = "iaco-han";  ///< registered planner giving the global path
   Json planner_params = Json::object();
+  /// Where planner_params were written (parse_scenario), for the planner's refusals at run time.
+  std::optional<planners::ParamsSource> planner_params_at;
   std::uint32_t seed = 1;            ///< the planner's seed and the noise stream's
   double dt = 0.125;                 ///< time step, s
   double horizon = 3.0;              ///< prediction horizon H, s
