@@ -229,23 +229,38 @@ int run_learn(const LearnOptions& o) {
   return 0;
 }
 
-int run_classify(const ClassifyOptions& o) {
-  const Json j = io::parse_json_text(io::read_text_file(o.model, "model file"), o.model);
-  const Model m = model_from_json(j, o.model);
-  if (o.values.size() != m.features)
-    throw UsageError(fmt::format("the model expects {} sensor distances, got {}", m.features, o.values.size()));
+/// The sensor distances of `classify`: every argument that is not one of its options, in order
+/// (spec/cin2021-ml.md#cli), so negative values such as -0.5, -.5 or -inf are values, never
+/// options. An argument starting with "--" is an unknown option.
+[[nodiscard]] std::vector<double> parse_sensor_values(const std::vector<std::string>& args) {
   std::vector<double> x;
-  for (const std::string& v : o.values) {
+  for (const std::string& v : args) {
+    if (v.rfind("--", 0) == 0)
+      throw UsageError("classify: unknown option '" + io::printable(v) + "' (options: --model FILE, --json)");
     try {
       std::size_t used = 0;
       const double d = std::stod(v, &used);
       if (used != v.size() || !std::isfinite(d)) throw UsageError("");
       x.push_back(d);
     } catch (const std::exception&) {
-      throw UsageError("sensor distance '" + v + "' is not a finite number");
+      throw UsageError("sensor distance '" + io::printable(v) + "' is not a finite number");
     }
   }
-  const int c = predict(m, x);
+  return x;
+}
+
+int run_classify(const ClassifyOptions& o) {
+  const Model m = read_model_file(o.model);
+  const std::vector<double> x = parse_sensor_values(o.values);
+  if (x.size() != m.features)
+    throw UsageError(fmt::format("the model expects {} sensor distances, got {}", m.features, x.size()));
+  const int c = [&] {
+    try {
+      return predict(m, x);
+    } catch (const DomainError& e) {
+      throw UsageError(std::string("classify: the sensor distances are outside the model's domain: ") + e.what());
+    }
+  }();
   const std::string name = static_cast<std::size_t>(c) < wall_following_labels.size()
                                ? std::string(wall_following_labels[static_cast<std::size_t>(c)]) : std::to_string(c);
   if (o.json) {
@@ -283,9 +298,16 @@ void add_learn_commands(CLI::App& app, Action& run) {
 
   auto* c = app.add_subcommand("classify", "Decide the movement for given sensor distances with a saved model (pathref learn --save-model)");
   c->add_option("--model", classify.model, "model file (JSON, format pathref-ml-model version 1)")->required()->type_name("FILE");
-  c->add_option("values", classify.values, "the sensor distances, in the data file's column order")->required();
   c->add_flag("--json", classify.json, "print the decision as JSON");
-  c->callback([&run] { run = [] { return run_classify(classify); }; });
+  // The sensor distances are every other argument, in order (parse_sensor_values): CLI11 would
+  // take a value such as -inf or -.5 for an option, so they are collected as extras instead.
+  c->allow_extras(true);
+  c->footer("VALUES: the sensor distances, in the data file's column order (every argument that is not an "
+            "option; negative values such as -0.5 or -.5 are values)");
+  c->callback([&run, c] {
+    classify.values = c->remaining();
+    run = [] { return run_classify(classify); };
+  });
 }
 
 }  // namespace pathref::cli

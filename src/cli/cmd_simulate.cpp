@@ -9,9 +9,11 @@
 
 #include "commands.hpp"
 #include "pathref/core/error.hpp"
+#include "pathref/io/json_text.hpp"
 #include "pathref/io/map_file.hpp"
 #include "pathref/io/svg_fused.hpp"
 #include "pathref/io/svg_sim.hpp"
+#include "pathref/planners/planner.hpp"
 #include "pathref/sim/fused.hpp"
 #include "pathref/sim/simulate.hpp"
 
@@ -66,7 +68,15 @@ int run_fused(const SimulateOptions& o, const std::string& text, const std::stri
   return r.outcome == dwa::Outcome::reached ? 0 : 1;
 }
 
+/// `--planner NAME`: a registered planner (checked before the scenario is read).
+void check_planner_option(const std::string& name) {
+  if (!name.empty() && planners::find_planner(name) == nullptr)
+    throw UsageError("--planner expects a planner name (" + planners::planner_names() + "), got '" +
+                     io::printable(name) + "'");
+}
+
 int run_simulate(const SimulateOptions& o) {
+  check_planner_option(o.planner);
   const std::string text = io::read_text_file(o.scenario, "scenario file");
   const std::string base = std::filesystem::path(o.scenario).parent_path().string();
   if (dwa::scenario_format(text) == "pathref-sim 2") return run_fused(o, text, base);

@@ -11,6 +11,7 @@
 #include "pathref/core/memory.hpp"
 #include "geometry_cgal/scene_map.hpp"
 #include "pathref/geometry/inflation.hpp"
+#include "pathref/io/json_text.hpp"
 #include "pathref/io/map_file.hpp"
 
 namespace pathref::geometry {
@@ -38,12 +39,11 @@ io::MapFile scene_map(std::string_view text, const std::string& filename, const 
   const std::int64_t w = scene.width;
   const std::int64_t h = scene.height;
   if (w > limits.max_side || h > limits.max_side)
-    throw ParseError(filename, 0, 0,
-                     fmt::format("/{}: a {}x{} grid exceeds the limit of {} cells per side",
-                                 w > limits.max_side ? "width" : "height", w, h, limits.max_side));
+    throw io::json_error_at(text, filename, w > limits.max_side ? "/width" : "/height",
+                            fmt::format("a {}x{} grid exceeds the limit of {} cells per side", w, h, limits.max_side));
   if (w > limits.max_cells / h)
-    throw ParseError(filename, 0, 0, fmt::format("/width: a {}x{} grid exceeds the limit of {} cells", w, h,
-                                                 limits.max_cells));
+    throw io::json_error_at(text, filename, "/width",
+                            fmt::format("a {}x{} grid exceeds the limit of {} cells", w, h, limits.max_cells));
   // spec/formats.md#limits: a scene of a few hundred bytes can declare a 2^28-cell world; its
   // raster (and the run on it) is estimated before the grid is allocated.
   require_raster_memory(scene, filename, limits.max_memory, limits.bytes_per_cell);

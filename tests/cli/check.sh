@@ -80,6 +80,23 @@ expect_exit 1 "NO: out_of_bounds at node 2: node 2 (2, -22) is outside the 4x3 m
 expect_exit 0 "map         plan.json (plan, 6x6" check --path plan.json
 expect_exit 0 "from the plan record" check --path plan.json
 expect_exit 2 "is a pathref-plan record (cells [x, y], base 0, origin lower): --base and --origin" check --path plan.json --base 1
+# issue 27 (item 5): a plan record whose map.width/height contradicts its rows is refused at the value
+python3 - plan.json <<'PY'
+import json, sys
+d = json.load(open(sys.argv[1]))
+d["map"]["width"] = 7
+json.dump(d, open("wide.json", "w"), indent=2)
+d["map"]["width"] = 6; d["map"]["height"] = 5
+json.dump(d, open("short.json", "w"), indent=2)
+d["map"]["height"] = 6; d["map"]["rows"][2] = "..x..."
+json.dump(d, open("letter.json", "w"), indent=2)
+PY
+expect_exit 2 "" check --path wide.json
+grep -qE '^pathref: error: wide.json:[0-9]+:[0-9]+: /map/width: expected 6 \(the length of each of /map/rows\), got 7$' "$tmp/err" ||
+  { echo "FAIL: plan record width message"; cat "$tmp/err"; exit 1; }
+expect_exit 2 "/map/height: expected 6 (the number of /map/rows), got 5" check --path short.json
+expect_exit 2 "/map/rows/2: expected only '.' (free) and '#' (blocked), got 'x' at character 3" check --path letter.json
+expect_exit 2 "/map/width: expected 6" check --path wide.json --map m.grid   # also when --map gives the map
 
 # many paths: JSON lines and a folder, with a summary; exit 1 when any is invalid
 { cat xy.json; printf '[[0,0],[1,0],[2,1],[3,2]]\n\n[[0,0],[0,1],[0,2],[1,2],[2,2],[3,2]]\n'; } > runs.jsonl

@@ -77,17 +77,27 @@ import json, sys
 d = json.load(open(sys.argv[1])); del d["rule"]
 json.dump(d, open(sys.argv[1], "w"), indent=2)
 PY
-expect_exit 2 "golden/grid/grid.coord.json: malformed golden file: the document has no 'rule' (a string" golden check
+expect_exit 2 'golden/grid/grid.coord.json:1:1: /: missing key "rule" (expected the rule id, a string)' golden check
+# issue 27: golden messages say what was expected, with their spaces (was "the document'testGroups' must be an array")
+cp "$root/golden/grid/grid.coord.json" golden/grid/
+python3 - golden/grid/grid.coord.json <<'PY'
+import json, sys
+d = json.load(open(sys.argv[1])); d["testGroups"] = "none"
+json.dump(d, open(sys.argv[1], "w"), indent=2)
+PY
+expect_exit 2 "golden/grid/grid.coord.json:" golden check
+grep -qE 'grid.coord.json:[0-9]+:[0-9]+: /testGroups: expected an array of at least one test group, got a string$' "$tmp/err" ||
+  { echo "FAIL: golden testGroups message"; cat "$tmp/err"; exit 1; }
 cp "$root/golden/grid/grid.coord.json" golden/grid/
 python3 - golden/grid/grid.coord.json <<'PY'
 import json, sys
 d = json.load(open(sys.argv[1])); del d["testGroups"][0]["tests"][1]["expected"]
 json.dump(d, open(sys.argv[1], "w"), indent=2)
 PY
-expect_exit 2 "malformed golden file: testGroups[0].tests[1] (tcId " golden check
+expect_exit 2 '/testGroups/0/tests/1: missing key "expected" (expected the expected output (null until generated))' golden check
 printf '{\n  "rule": "grid.coord",\n  "testGroups": [\n    {"tcId": 1,,}\n' > golden/grid/grid.coord.json
 expect_exit 2 "pathref: error: golden/grid/grid.coord.json:4:" golden check   # the line of the error, not 0
-grep -qF "invalid JSON" "$tmp/err" || { echo "FAIL: JSON error message"; cat "$tmp/err"; exit 1; }
+grep -qF "expected valid JSON (" "$tmp/err" || { echo "FAIL: JSON error message"; cat "$tmp/err"; exit 1; }
 
 # a bare .pgm: ROS maps are read through their YAML
 printf 'P5\n2 2\n255\n\0\0\0\0' > map.pgm

@@ -58,5 +58,14 @@ cmp -s "$tmp/out" "$tmp/ushape.grid" || { echo "FAIL: convert of a scene differs
 printf '{"format": "pathref-scene 1", "origin": [0, 0], "width": 4, "height": 4, "cell_size": 1, "radius": 0.5, "margin": 0, "polygons": [{"vertices": [[1, 1], [2, 2], [3, 3]]}], "start": [0, 3], "goal": [3, 0]}' >"$tmp/degenerate.json"
 expect_exit 2 "DomainError: $tmp/degenerate.json: /polygons/0: degenerate polygon" plan --map "$tmp/degenerate.json" --algo astar
 expect_exit 2 "DomainError: $tmp/degenerate.json: /polygons/0: degenerate polygon" inflate "$tmp/degenerate.json"
-expect_exit 2 "tests/data/scenes/ushape.json:0:0: /width: a 20x16 grid exceeds the limit of 10 cells per side" plan --map tests/data/scenes/ushape.json --algo astar --max-side 10
+expect_exit 2 "tests/data/scenes/ushape.json:5:12: /width: a 20x16 grid exceeds the limit of 10 cells per side" plan --map tests/data/scenes/ushape.json --algo astar --max-side 10
+# width or height 0 (issue 27): refused at its value, not as "start ... is not free" or a DomainError
+sed 's/"width": 20/"width": 0/' tests/data/scenes/ushape.json >"$tmp/w0.json"
+sed 's/"height": 16/"height": 0/' tests/data/scenes/ushape.json >"$tmp/h0.json"
+for cmd in "plan --algo astar --map" "plan --algo rrt --map" "inflate"; do
+  # shellcheck disable=SC2086
+  expect_exit 2 "$tmp/w0.json:5:12: /width: expected an integer in [1, 268435456], got 0" $cmd "$tmp/w0.json"
+  # shellcheck disable=SC2086
+  expect_exit 2 "$tmp/h0.json:6:13: /height: expected an integer in [1, 268435456], got 0" $cmd "$tmp/h0.json"
+done
 echo "inflate: ok"

@@ -37,7 +37,42 @@ expect2 "$pathref" learn --data "$tmp/d.data" --cv 2 --set bogus=1 >/dev/null
 expect2 "$pathref" learn --data "$tmp/d.data" --cv 2 --classifier lda >/dev/null
 expect2 "$pathref" classify --model "$tmp/m.json" 1 >/dev/null               # wrong number of values
 echo '{"format":"pathref-ml-model","version":9}' >"$tmp/v9.json"
-expect2 "$pathref" classify --model "$tmp/v9.json" 1 2 | grep -q "v9.json:1:1: model file version 1" || fail "version message"
+expect2 "$pathref" classify --model "$tmp/v9.json" 1 2 | grep -qF "v9.json:1:40: /version: expected 1 (this reader reads model file version 1), got 9" || fail "version message"
+
+# model files (issue 27): every refusal at its line, column and JSON pointer, never library text
+sed 's/"mean":\[[^]]*\]/"mean":"abc"/' "$tmp/m.json" >"$tmp/m_mean.json"
+out=$(expect2 "$pathref" classify --model "$tmp/m_mean.json" 1 2)
+echo "$out" | grep -q "m_mean.json:1:[0-9]*: /model/mean: expected an array, got a string" || fail "model type message: $out"
+echo "$out" | grep -q "json.exception" && fail "library text in: $out"
+sed 's/"var_smoothing"/"var_smoothin"/' "$tmp/m.json" >"$tmp/m_key.json"
+out=$(expect2 "$pathref" classify --model "$tmp/m_key.json" 1 2)
+echo "$out" | grep -q "m_key.json:1:[0-9]*: /params: missing key \"var_smoothing\"" || fail "model missing key message: $out"
+"$pathref" learn --data "$tmp/d.data" --classifier tree --holdout 0.5 --save-model "$tmp/t.json" >/dev/null
+sed 's/"feature":/"featur":/' "$tmp/t.json" >"$tmp/t_key.json"
+out=$(expect2 "$pathref" classify --model "$tmp/t_key.json" 1 2)
+echo "$out" | grep -q "t_key.json:1:[0-9]*: /model: missing key \"feature\"" || fail "tree missing key message: $out"
+echo "$out" | grep -q "not found" && fail "library text in: $out"
+
+# classify's values (issue 27): negative numbers and -inf are values, never options
+[ "$("$pathref" classify --model "$tmp/m.json" 6.5 -1.0)" = "0 Move-Forward" ] || fail "classify 6.5 -1.0"
+[ "$("$pathref" classify --model "$tmp/m.json" -.5 1.2)" = "2 Sharp-Right-Turn" ] || fail "classify -.5 1.2"
+"$pathref" classify --model "$tmp/m.json" -.5 1.2 --json | grep -q '"label":"Sharp-Right-Turn"' || fail "classify -.5 1.2 --json"
+expect2 "$pathref" classify --model "$tmp/m.json" 1 -inf | grep -qF "sensor distance '-inf' is not a finite number" || fail "-inf message"
+expect2 "$pathref" classify --model "$tmp/m.json" -inf 1 --json | grep -qF "sensor distance '-inf' is not a finite number" || fail "leading -inf message"
+expect2 "$pathref" classify --model "$tmp/m.json" inf -inf | grep -qF "sensor distance 'inf' is not a finite number" || fail "inf message"
+expect2 "$pathref" classify --model "$tmp/m.json" 1 2 --jsn | grep -qF "unknown option '--jsn'" || fail "unknown option message"
+
+# KNN and finite values whose squared distance overflows (spec/cin2021-ml.md, cin2021.knn domain)
+"$pathref" learn --data "$tmp/d.data" --classifier knn --set k=1 --holdout 0.5 --save-model "$tmp/knn.json" >/dev/null
+[ "$("$pathref" classify --model "$tmp/knn.json" 6.5 1.0)" = "0 Move-Forward" ] || fail "knn classify 6.5 1.0"
+"$pathref" classify --model "$tmp/knn.json" 1e150 1.0 >/dev/null || fail "knn classify 1e150 1.0 (finite distances)"
+out=$(expect2 "$pathref" classify --model "$tmp/knn.json" 1e308 1e308)
+echo "$out" | grep -qF "outside the model's domain: KNN: the squared distance from the sample to training row 0 overflows" || fail "knn overflow message: $out"
+
+# unreadable inputs: the reason, never "(empty file)"
+expect2 "$pathref" learn --data "$tmp" --cv 2 | grep -qF "cannot read data file '$tmp': it is a directory" || fail "directory message"
+expect2 "$pathref" learn --data "$tmp/absent.data" --cv 2 | grep -qF "cannot read data file '$tmp/absent.data': No such file or directory" || fail "missing file message"
+expect2 "$pathref" classify --model "$tmp" 1 2 | grep -qF "cannot read model file '$tmp': it is a directory" || fail "model directory message"
 
 data="$(dirname "$0")/../../../shared/data/uci-wall-following/sensor_readings_4.data"
 if [ -f "$data" ]; then

@@ -102,7 +102,24 @@ expect_error '{"format": "pathref-sim 1", "map": ["..#."], "start": [0,0], "goal
   '/goal: on a blocked cell'
 expect_error '{"format": "pathref-sim 1", "map": [' 'bad.json:1:'
 expect_error '{"format": "pathref-sim 1", "map": ["...."], "start": [0,0], "goal": [3,0], "planner": "nope"}' \
-  "unknown planner 'nope'"
+  'bad.json:1:88: /planner: expected a planner name (.*astar.*), got "nope"'
+# issue 27: the path, the planner and its parameters at their pointers, with line and column
+expect_error '{"format": "pathref-sim 1", "map": ["...."], "start": [0,0], "goal": [3,0], "path": [[0,0], [2,0], [3,0]]}' \
+  'bad.json:1:93: /path/1: expected a free cell one step from (0, 0) allowed under the corner policy strict, got (2, 0)'
+expect_error '{"format": "pathref-sim 1", "map": ["...."], "start": [0,0], "goal": [3,0], "planner": {"name": "astar", "params": {"weight": 2}}}' \
+  "bad.json:1:[0-9]*: /planner/params/weight: expected a parameter of astar: unknown parameter 'weight' (known: heuristic)"
+expect_error '{"format": "pathref-sim 1", "map": ["...."], "start": [0,0], "goal": [3,0], "planner": {"name": "iaco-han", "params": {"ants": -3}}}' \
+  'bad.json:1:[0-9]*: /planner/params: the planner iaco-han refused its parameters: ant colony: ants must be in'
+expect_error '{"format": "pathref-sim 1", "map": ["...."], "start": [0,0], "goal": [3,0], "planner": {"name": "astarr"}}' \
+  '/planner/name: expected a planner name'
+set +e; "$pathref" simulate --planner nope tests/data/sim/none.json 2>"$tmp/err.txt" >/dev/null; rc=$?; set -e
+[ "$rc" = 2 ] || fail "--planner nope must exit 2, got $rc"
+grep -q -- "--planner expects a planner name (.*), got 'nope'" "$tmp/err.txt" || { cat "$tmp/err.txt"; fail "--planner message"; }
+# a polygon scene as the map file: what to do instead, no internal API name
+cp tests/data/scenes/ushape.json "$tmp/scene.json"
+expect_error '{"format": "pathref-sim 1", "map": "scene.json", "start": [0,0], "goal": [3,0]}' \
+  "is a polygon scene (pathref-scene 1), which cannot be read as a grid map here: inflate it into one first (pathref inflate .*scene.json -o MAP.grid)"
+grep -q "MapReadOptions" "$tmp/err.txt" && fail "internal API name in: $(cat "$tmp/err.txt")"
 set +e; "$pathref" simulate "$tmp/missing.json" 2>/dev/null; rc=$?; set -e
 [ "$rc" = 2 ] || fail "missing file must exit 2, got $rc"
 echo "simulate: ok"

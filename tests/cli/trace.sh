@@ -61,10 +61,10 @@ grep -q "#9 agree" out.txt && grep -q "#8 agree" out.txt && ! grep -q "#7 agree"
 grep -q "#10 B      (no draw: the trace ends after 10 draws)" out.txt || fail "B ends: $(cat out.txt)"
 printf '{"i": 0, "u": 0.5}\n{"i": 2, "u": 0.25}\n' >gap.jsonl
 [ "$(rc "$pathref" trace-diff aco.jsonl gap.jsonl)" = 2 ] || fail "index gap: not exit 2"
-grep -q "gap.jsonl:2:1: .*draw index 1" err.txt || fail "index gap message: $(cat err.txt)"
+grep -q "gap.jsonl:2:[0-9]*: /i: expected draw index 1" err.txt || fail "index gap message: $(cat err.txt)"
 printf '{"i": 0, "u": 1.5}\n' >range.jsonl
 [ "$(rc "$pathref" trace-diff aco.jsonl range.jsonl)" = 2 ] || fail "u out of range: not exit 2"
-grep -q "range.jsonl:1:1: u in \[0, 1)" err.txt || fail "range message: $(cat err.txt)"
+grep -q "range.jsonl:1:15: /u: expected u in \[0, 1)" err.txt || fail "range message: $(cat err.txt)"
 printf '{"i": 0, "u": 0.5\n' >broken.jsonl
 [ "$(rc "$pathref" trace-diff aco.jsonl broken.jsonl)" = 2 ] || fail "broken JSON: not exit 2"
 grep -q "broken.jsonl:1:" err.txt || fail "broken JSON message: $(cat err.txt)"

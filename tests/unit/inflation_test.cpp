@@ -174,27 +174,33 @@ TEST_CASE("inflation.grid: closed squares, exact tie at r = s = 0.3", "[inflatio
   CHECK_THROWS_AS(inflate_grid(m, *parse_decimal("0"), *parse_decimal("1")), DomainError);
 }
 
-TEST_CASE("formats.scene: reader errors carry a JSON pointer", "[inflation][formats]") {
+TEST_CASE("formats.scene: reader errors carry the line, column and JSON pointer of the value", "[inflation][formats]") {
   const std::string head = R"({"format": "pathref-scene 1", "origin": [0, 0], "width": 4, "height": 4, "cell_size": 0.5, "radius": 0.2, "margin": 0, "start": [0, 0], "goal": [3, 3], )";
   CHECK(parse_error(head + R"("polygons": [{"vertices": [[0, 0], [1, 0], [1, "x"]]}]})") ==
-        "s.json:0:0: /polygons/0/vertices/2/1: expected a number (at most 30 significant digits, |exponent| <= 30), got a string");
+        "s.json:1:200: /polygons/0/vertices/2/1: expected a number (at most 30 significant digits, |exponent| <= 30), got a string");
   CHECK(parse_error(head + R"("polygons": [{"vertices": [[0, 0], [1, 0], [1, 1e99]]}]})") ==
-        "s.json:0:0: /polygons/0/vertices/2/1: expected a number (at most 30 significant digits, |exponent| <= 30), got 1e99");
+        "s.json:1:200: /polygons/0/vertices/2/1: expected a number (at most 30 significant digits, |exponent| <= 30), got 1e99");
   CHECK(parse_error(head + R"("polygons": [], "extra": 1})") ==
-        "s.json:0:0: /extra: unknown key (expected one of format, name, origin, width, height, cell_size, radius, margin, polygons, start, goal)");
+        "s.json:1:178: /extra: unknown key (expected one of format, name, origin, width, height, cell_size, radius, margin, polygons, start, goal)");
   CHECK(parse_error(head + R"("polygons": [{"vertices": [[0, 0]], "holes": []}]})") ==
-        "s.json:0:0: /polygons/0/holes: unknown key (expected \"vertices\")");
-  CHECK(parse_error(head + R"("polygons": [], "radius": 1})") .find("duplicate key \"radius\"") != std::string::npos);
+        "s.json:1:198: /polygons/0/holes: unknown key (expected \"vertices\")");
+  CHECK(parse_error(head + R"("polygons": [], "radius": 1})") .find("the key \"radius\" appears twice") != std::string::npos);
   CHECK(parse_error(R"({"format": "pathref-scene 1", "origin": [0, 0], "width": 4.0, "height": 4, "cell_size": 1, "radius": 0, "margin": 0, "polygons": [], "start": [0, 0], "goal": [1, 1]})") ==
-        "s.json:0:0: /width: expected an integer in [1, 268435456], got a non-integer number");
+        "s.json:1:58: /width: expected an integer in [1, 268435456], got a non-integer number");
+  // width or height 0 (a JSON unsigned integer): refused at its value, not later as "start ... is
+  // not free" or a DomainError without a pointer (issue 27)
+  CHECK(parse_error(R"({"format": "pathref-scene 1", "origin": [0, 0], "width": 0, "height": 4, "cell_size": 1, "radius": 0, "margin": 0, "polygons": [], "start": [0, 0], "goal": [1, 1]})") ==
+        "s.json:1:58: /width: expected an integer in [1, 268435456], got 0");
+  CHECK(parse_error(R"({"format": "pathref-scene 1", "origin": [0, 0], "width": 4, "height": 0, "cell_size": 1, "radius": 0, "margin": 0, "polygons": [], "start": [0, 0], "goal": [1, 1]})") ==
+        "s.json:1:71: /height: expected an integer in [1, 268435456], got 0");
   CHECK(parse_error(R"({"format": "pathref-scene 1", "origin": [0, 0], "width": 4, "height": 4, "cell_size": 0, "radius": 0, "margin": 0, "polygons": [], "start": [0, 0], "goal": [1, 1]})") ==
-        "s.json:0:0: /cell_size: expected a number > 0, got 0");
+        "s.json:1:87: /cell_size: expected a number > 0, got 0");
   CHECK(parse_error(R"({"format": "pathref-scene 1", "origin": [0, 0], "width": 4, "height": 4, "cell_size": 1, "radius": -0.1, "margin": 0, "polygons": [], "start": [0, 0], "goal": [1, 1]})") ==
-        "s.json:0:0: /radius: expected a number >= 0, got -0.1");
+        "s.json:1:100: /radius: expected a number >= 0, got -0.1");
   CHECK(parse_error(R"({"format": "pathref-scene 1", "origin": [0, 0], "width": 4, "height": 4, "cell_size": 1, "radius": 0, "margin": 0, "polygons": []})") ==
-        "s.json:0:0: /: missing key \"start\"");
+        "s.json:1:1: /: missing key \"start\"");
   CHECK(parse_error("{\n  \"format\": ,\n}") .rfind("s.json:2:13: expected valid JSON", 0) == 0);
-  CHECK(parse_error("[]") == "s.json:0:0: /: expected a JSON object (a pathref-scene 1), got an array");
+  CHECK(parse_error("[]") == "s.json:1:1: /: expected a JSON object (a pathref-scene 1), got an array");
 }
 
 TEST_CASE("formats.scene: to_scene_json round trip keeps every number exact", "[inflation][formats]") {

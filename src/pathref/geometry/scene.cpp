@@ -40,7 +40,10 @@ class Reader {
     const std::string want = "expected an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
     if (v.is_number_unsigned()) {
       const auto u = v.get<std::uint64_t>();
-      if (u > static_cast<std::uint64_t>(hi)) fail(ptr, want + ", got " + std::to_string(u));
+      // JSON's non-negative integers arrive as unsigned: both bounds apply (a width of 0 was let
+      // through here and failed later as "start ... is not free" or a DomainError, issue 27).
+      if (u > static_cast<std::uint64_t>(hi) || static_cast<std::int64_t>(u) < lo)
+        fail(ptr, want + ", got " + std::to_string(u));
       return static_cast<std::int64_t>(u);
     }
     if (v.is_number_integer()) {

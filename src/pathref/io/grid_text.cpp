@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "pathref/core/error.hpp"
+#include "pathref/io/json_text.hpp"
 
 namespace pathref::io {
 
@@ -107,7 +108,7 @@ Located parse_number(const std::vector<Token>& tokens, std::size_t index, const 
   for (const char c : t.text)
     if (c < '0' || c > '9')
       throw ParseError(file, line.number, t.column,
-                       fmt::format("expected {} as a decimal integer, got '{}'", what, t.text));
+                       fmt::format("expected {} as a decimal integer, got '{}'", what, printable(t.text)));
   // At most 18 digits fit in int64 without overflow; anything longer is out of range anyway.
   std::int64_t v = 0;
   const bool too_long = t.text.size() > 18;
@@ -145,7 +146,7 @@ void parse_magic(const std::vector<Line>& lines, const std::string& file) {
   if (tokens[1].text != "1")
     throw ParseError(file, 1, tokens[1].column,
                      fmt::format("unsupported format version '{}' (this reader reads version 1)",
-                                 tokens[1].text));
+                                 printable(tokens[1].text)));
   expect_end(tokens, 2, l, file, "pathref-grid 1");
 }
 
@@ -226,7 +227,7 @@ Header parse_header(const std::vector<Line>& lines, const std::string& file) {
       throw ParseError(file, l.number, tokens[0].column,
                        fmt::format("unknown keyword '{}' (expected size, start, goal, name, map "
                                    "or a # comment)",
-                                   kw));
+                                   printable(kw)));
     }
   }
   const std::size_t eof_line = lines.empty() ? 1 : lines.back().number + 1;

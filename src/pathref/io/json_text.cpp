@@ -343,7 +343,7 @@ Json parse_json_text(std::string_view text, std::string_view file, std::size_t f
   const Outcome o = parse_bounded(text, limits, out);
   if (o.refusal == Refusal::none) return out;
   const auto [line, col] = line_column(text, o.byte);
-  throw ParseError(std::string(file), first_line - 1 + line, col, o.message);
+  throw ParseError(std::string(file), first_line - 1 + line, col, "expected " + o.message);
 }
 
 std::optional<Json> parse_cli_json_value(std::string_view text, std::string_view what) {

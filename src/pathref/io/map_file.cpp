@@ -13,6 +13,7 @@
 #include <system_error>
 
 #include "pathref/core/error.hpp"
+#include "pathref/io/json_text.hpp"
 #include "pathref/io/matrix.hpp"
 #include "pathref/io/movingai.hpp"
 
@@ -169,9 +170,10 @@ MapFile parse_map_text(std::string_view text_in, std::string_view filename, MapF
                                    "(pathref plan --map FILE.yaml) or parse_ros_map", filename));
     case MapFormat::scene: {
       if (!options.scene_to_map)
-        throw UsageError(fmt::format("'{}': a polygon scene needs the exact inflation of pathref_geometry "
-                                     "(pathref plan --map FILE.json, or MapReadOptions::scene_to_map)",
-                                     filename));
+        throw UsageError(fmt::format("'{0}' is a polygon scene (pathref-scene 1), which cannot be read as a grid "
+                                     "map here: inflate it into one first (pathref inflate {0} -o MAP.grid) and "
+                                     "give MAP.grid instead",
+                                     printable(filename)));
       return options.scene_to_map(text_in, std::string(filename), options.limits);
     }
     case MapFormat::automatic: break;

@@ -7,6 +7,7 @@
 
 #include "pathref/core/error.hpp"
 #include "pathref/io/json_text.hpp"
+#include "pathref/io/plan_json.hpp"
 
 namespace pathref::io {
 
@@ -203,11 +204,6 @@ class RowScanner {
   std::size_t count_ = 0;
 };
 
-std::string shown(std::string_view t) {
-  std::string s;
-  for (const char c : t.substr(0, 24)) s += (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) >= 0x7f) ? '?' : c;
-  return t.size() > 24 ? s + "..." : s;
-}
 
 PathRecord read_text(std::string_view text, const std::string& file, PathFormat format) {
   // Pass 1: row counts only (no token stored), for the format detection and its messages.
@@ -272,7 +268,7 @@ PathRecord read_text(std::string_view text, const std::string& file, PathFormat 
         throw ParseError(file, row.line, column,
                          fmt::format("expected an integer of magnitude at most {} (a cell coordinate or node "
                                      "number), got '{}'",
-                                     max_path_number, shown(t)));
+                                     max_path_number, printable(t, 24)));
       if (seen / per_node >= max_path_nodes && seen % per_node == 0)
         throw ParseError(file, row.line, column, fmt::format("a path has more than {} nodes", max_path_nodes));
       ++seen;
@@ -282,33 +278,38 @@ PathRecord read_text(std::string_view text, const std::string& file, PathFormat 
   return rec;
 }
 
-/// One JSON value (a whole file, or a line of a JSON-lines file) as a path.
+/// One JSON value (a whole file, or a line of a JSON-lines file) as a path. `text` is its JSON
+/// text, beginning on line `line` of `file`: every refusal is `FILE:LINE:COLUMN: /pointer: what`.
 PathRecord read_json_value(const Json& doc, const std::string& name, const std::string& file, std::size_t line,
-                           PathFormat format) {
+                           PathFormat format, std::string_view text) {
+  const auto fail = [&](const std::string& ptr, const std::string& what) {
+    throw json_error_at(text, file, ptr, what, line);
+  };
   if (doc.is_object()) {
     if (format != PathFormat::automatic && format != PathFormat::plan)
-      throw ParseError(file, line, 1, fmt::format("a JSON object is a pathref-plan record, not '{}' numbers", to_string(format)));
+      fail("", fmt::format("a JSON object is a pathref-plan record, not '{}' numbers", to_string(format)));
     if (doc.value("format", Json()) != "pathref-plan")
-      throw ParseError(file, line, 1, "a JSON object must be a pathref-plan record (\"format\": \"pathref-plan\"); "
-                                      "other paths are a JSON array of [x, y] or of node numbers");
+      fail("", "a JSON object must be a pathref-plan record (\"format\": \"pathref-plan\"); "
+               "other paths are a JSON array of [x, y] or of node numbers");
     const auto it = doc.find("path");
-    if (it == doc.end() || !it->is_array())
-      throw ParseError(file, line, 1, "the pathref-plan record has no 'path' array");
+    if (it == doc.end() || !it->is_array()) fail(it == doc.end() ? "" : "/path", "the pathref-plan record has no 'path' array");
     PathRecord rec{name, PathFormat::plan, {}, doc};
     for (std::size_t i = 0; i < it->size(); ++i) {
       const Json& c = (*it)[i];
       std::int64_t x = 0, y = 0;
       if (!c.is_array() || c.size() != 2 || !integral_value(c[0], x) || !integral_value(c[1], y))
-        throw ParseError(file, line, 1, fmt::format("path[{}]: expected [x, y] (two integers)", i));
+        fail("/path/" + std::to_string(i), "expected [x, y] (two integers)");
       push_number(rec, x, file, line, 1);
       push_number(rec, y, file, line, 1);
     }
+    // The whole record is checked here, where its text is at hand (its map rows against
+    // map.width/height, its endpoints and policy), so a contradiction is reported at its place.
+    (void)plan_from_json(doc, file, text, line);
     return rec;
   }
-  if (!doc.is_array())
-    throw ParseError(file, line, 1, "expected a JSON array of [x, y] cells or of node numbers, or a pathref-plan object");
-  if (doc.empty()) throw ParseError(file, line, 1, "no path: the JSON array is empty");
-  if (format == PathFormat::plan) throw ParseError(file, line, 1, "expected a pathref-plan JSON object, got an array");
+  if (!doc.is_array()) fail("", "expected a JSON array of [x, y] cells or of node numbers, or a pathref-plan object");
+  if (doc.empty()) fail("", "no path: the JSON array is empty");
+  if (format == PathFormat::plan) fail("", "expected a pathref-plan JSON object, got an array");
   if (format == PathFormat::automatic) format = doc[0].is_array() ? PathFormat::xy : PathFormat::node;
   PathRecord rec{name, format, {}, nullptr};
   for (std::size_t i = 0; i < doc.size(); ++i) {
@@ -316,15 +317,14 @@ PathRecord read_json_value(const Json& doc, const std::string& name, const std::
     if (format == PathFormat::node) {
       std::int64_t n = 0;
       if (!integral_value(c, n))
-        throw ParseError(file, line, 1, fmt::format("[{}]: expected a node number (an integer of magnitude at most {})", i, max_path_number));
+        fail("/" + std::to_string(i), fmt::format("expected a node number (an integer of magnitude at most {})", max_path_number));
       push_number(rec, n, file, line, 1);
       continue;
     }
     std::int64_t a = 0, b = 0;
     if (!c.is_array() || c.size() != 2 || !integral_value(c[0], a) || !integral_value(c[1], b))
-      throw ParseError(file, line, 1,
-                       fmt::format("[{}]: expected {} (two integers of magnitude at most {})", i,
-                                   format == PathFormat::xy ? "[x, y]" : "[row, col]", max_path_number));
+      fail("/" + std::to_string(i), fmt::format("expected {} (two integers of magnitude at most {})",
+                                                format == PathFormat::xy ? "[x, y]" : "[row, col]", max_path_number));
     push_number(rec, a, file, line, 1);
     push_number(rec, b, file, line, 1);
   }
@@ -346,7 +346,7 @@ std::vector<PathRecord> parse_path_text(std::string_view text, std::string_view 
       const std::string_view l = text.substr(at, nl - at);
       if (l.find_first_not_of(" \t\r") != std::string_view::npos) {
         const Json doc = parse_json_text(l, file, line);
-        out.push_back(read_json_value(doc, file + ":" + std::to_string(line), file, line, format));
+        out.push_back(read_json_value(doc, file + ":" + std::to_string(line), file, line, format, l));
       }
       at = nl + 1;
       ++line;
@@ -357,7 +357,7 @@ std::vector<PathRecord> parse_path_text(std::string_view text, std::string_view 
   const std::size_t first = text.find_first_not_of(" \t\r\n");
   const char c0 = first == std::string_view::npos ? '\0' : text[first];
   if (c0 == '{' || (c0 == '[' && text.find(';') == std::string_view::npos))
-    out.push_back(read_json_value(parse_json_text(text, file), file, file, 1, format));
+    out.push_back(read_json_value(parse_json_text(text, file), file, file, 1, format, text));
   else
     out.push_back(read_text(text, file, format));
   return out;

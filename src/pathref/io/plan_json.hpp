@@ -55,9 +55,14 @@ struct PlanJsonView {
   std::vector<grid::Cell> path;
 };
 
-/// Reads back the fields of a "pathref-plan" v1 object that describe the map and the path.
-/// UsageError naming the first missing or ill-typed field (`source` names the input, e.g.
-/// "<stdin>"), or when format/format_version are not "pathref-plan"/1.
-[[nodiscard]] PlanJsonView plan_from_json(const Json& doc, std::string_view source);
+/// Reads back the fields of a "pathref-plan" v1 object that describe the map and the path
+/// (spec/cli.md#plan-json). Every refusal is a ParseError at the offending value: a missing or
+/// ill-typed field, format/format_version not "pathref-plan"/1, rows of different lengths or
+/// characters other than '.' and '#', `map.width`/`map.height` (or `map.blocked`) that contradict
+/// `map.rows`. `source` names the input (e.g. "<stdin>"); with `text`, the record's JSON text
+/// (`first_line`: the line of the file it begins on), messages are `SOURCE:LINE:COLUMN: /pointer:
+/// what`, without it `SOURCE: /pointer: what`.
+[[nodiscard]] PlanJsonView plan_from_json(const Json& doc, std::string_view source, std::string_view text = {},
+                                          std::size_t first_line = 1);
 
 }  // namespace pathref::io

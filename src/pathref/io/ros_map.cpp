@@ -13,6 +13,7 @@
 #include <system_error>
 
 #include "pathref/core/error.hpp"
+#include "pathref/io/json_text.hpp"
 
 namespace pathref::io {
 
@@ -26,7 +27,7 @@ std::string describe_byte(char c) {
 }
 
 /// 1-based line and column of byte `offset` in `text` (lines end at LF; columns count bytes).
-std::pair<std::size_t, std::size_t> line_column(std::string_view text, std::size_t offset) {
+std::pair<std::size_t, std::size_t> byte_line_column(std::string_view text, std::size_t offset) {
   std::size_t line = 1;
   std::size_t line_start = 0;
   const std::size_t end = std::min(offset, text.size());
@@ -54,7 +55,7 @@ class PgmReader {
   PgmReader(std::string_view bytes, std::string file) : b_(bytes), file_(std::move(file)) {}
 
   [[noreturn]] void fail_at(std::size_t offset, const std::string& message) const {
-    const auto [line, column] = line_column(b_, offset);
+    const auto [line, column] = byte_line_column(b_, offset);
     throw ParseError(file_, line, column, message);
   }
 
@@ -137,7 +138,7 @@ PgmImage parse_pgm(std::string_view bytes, std::string_view filename) {
   img.height = h.value;
   img.maxval = static_cast<std::uint32_t>(m.value);
   {
-    const auto [line, column] = line_column(bytes, m.offset);
+    const auto [line, column] = byte_line_column(bytes, m.offset);
     img.maxval_line = line;
     img.maxval_column = column;
   }
@@ -264,7 +265,7 @@ RosMapMode parse_ros_map_mode(std::string_view name) {
   if (name == "trinary") return RosMapMode::trinary;
   if (name == "scale") return RosMapMode::scale;
   if (name == "raw") return RosMapMode::raw;
-  throw UsageError(fmt::format("unknown map mode '{}' (expected trinary, scale or raw)", name));
+  throw UsageError(fmt::format("unknown map mode '{}' (expected trinary, scale or raw)", printable(name)));
 }
 
 std::string_view to_string(RosMapMode mode) noexcept {
@@ -279,7 +280,7 @@ std::string_view to_string(RosMapMode mode) noexcept {
 UnknownAs parse_unknown_as(std::string_view name) {
   if (name == "blocked") return UnknownAs::blocked;
   if (name == "free") return UnknownAs::free;
-  throw UsageError(fmt::format("unknown value '{}' for unknown cells (expected blocked or free)", name));
+  throw UsageError(fmt::format("unknown value '{}' for unknown cells (expected blocked or free)", printable(name)));
 }
 
 std::string_view to_string(UnknownAs u) noexcept { return u == UnknownAs::free ? "free" : "blocked"; }
@@ -471,13 +472,13 @@ RosMapMeta parse_ros_yaml(std::string_view text, std::string_view filename, bool
 
   const auto parse_number_scalar = [&](const Scalar& s, std::size_t line, const std::string& what) {
     if (s.quoted || !is_yaml_number(s.text))
-      y.fail(line, s.column, fmt::format("expected {} as a number, got '{}'", what, s.text));
+      y.fail(line, s.column, fmt::format("expected {} as a number, got '{}'", what, printable(s.text)));
     std::string_view digits = s.text;
     if (!digits.empty() && digits.front() == '+') digits.remove_prefix(1);
     double d = 0.0;
     const auto res = std::from_chars(digits.data(), digits.data() + digits.size(), d);
     if (res.ec != std::errc() || res.ptr != digits.data() + digits.size() || !std::isfinite(d))
-      y.fail(line, s.column, fmt::format("{} '{}' is out of the range of a binary64 number", what, s.text));
+      y.fail(line, s.column, fmt::format("{} '{}' is out of the range of a binary64 number", what, printable(s.text)));
     return d;
   };
 
@@ -548,10 +549,10 @@ RosMapMeta parse_ros_yaml(std::string_view text, std::string_view filename, bool
     else if (key == "mode") seen = &mode;
     if (seen == nullptr) {
       if (allow_unknown_keys) continue;
-      y.fail(number, kb + 1, fmt::format("unknown key '{}' (map_server reads {})", key, kKeyList));
+      y.fail(number, kb + 1, fmt::format("unknown key '{}' (map_server reads {})", printable(key), kKeyList));
     }
     if (seen->line != 0)
-      y.fail(number, kb + 1, fmt::format("duplicate key '{}' (first given on line {})", key, seen->line));
+      y.fail(number, kb + 1, fmt::format("duplicate key '{}' (first given on line {})", printable(key), seen->line));
     if (i >= t.size() || t[i] == '#')
       y.fail(number, i + 1, fmt::format("expected a value after '{}:' on the same line", key));
     const Value v = y.parse_value(t, i, number, key);
@@ -584,7 +585,7 @@ RosMapMeta parse_ros_yaml(std::string_view text, std::string_view filename, bool
         y.fail(number, s.column, fmt::format("resolution must be greater than 0, got {}", s.text));
     } else if (key == "origin") {
       if (!v.is_sequence)
-        y.fail(number, v.column, fmt::format("expected origin as a sequence [x, y, yaw], got '{}'", v.scalar.text));
+        y.fail(number, v.column, fmt::format("expected origin as a sequence [x, y, yaw], got '{}'", printable(v.scalar.text)));
       if (v.items.size() != 3)
         y.fail(number, v.column, fmt::format("expected origin as a sequence of 3 numbers [x, y, yaw], "
                                              "got {} item{}",

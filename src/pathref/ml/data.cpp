@@ -1,6 +1,7 @@
 #include "pathref/ml/data.hpp"
 
 #include "pathref/io/input_file.hpp"
+#include "pathref/io/json_text.hpp"
 
 #include <charconv>
 #include <cmath>
@@ -81,7 +82,7 @@ Dataset parse_wall_following(std::string_view text, std::string_view filename,
                              "Sharp-Right-Turn or Slight-Left-Turn): missing label column");
           throw ParseError(file, line_no, col,
                            "a label Move-Forward, Slight-Right-Turn, Sharp-Right-Turn or "
-                           "Slight-Left-Turn, got '" + std::string(field.substr(0, 40)) + "'");
+                           "Slight-Left-Turn, got '" + io::printable(field, 40) + "'");
         }
         if (d.features == 0) {
           d.features = values.size();
@@ -100,13 +101,13 @@ Dataset parse_wall_following(std::string_view text, std::string_view filename,
                                          : "at most " + std::to_string(limits.max_features) + " numbers");
       if (!is_number_text(field))
         throw ParseError(file, line_no, col,
-                         "a decimal number, got '" + std::string(field.substr(0, 40)) + "'");
+                         "a decimal number, got '" + io::printable(field, 40) + "'");
       double v = 0.0;
       const char* b = field.data();
       if (*b == '+') ++b;
       const auto r = std::from_chars(b, field.data() + field.size(), v);
       if (r.ec != std::errc() || r.ptr != field.data() + field.size() || !std::isfinite(v))
-        throw ParseError(file, line_no, col, "a finite decimal number, got '" + std::string(field.substr(0, 40)) + "'");
+        throw ParseError(file, line_no, col, "a finite decimal number, got '" + io::printable(field, 40) + "'");
       values.push_back(v);
       start = comma + 1;
     }

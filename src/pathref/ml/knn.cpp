@@ -68,6 +68,12 @@ int knn_vote(std::span<const int> labels, std::span<const double> distances, std
   return static_cast<int>(best);
 }
 
+std::optional<std::size_t> first_overflow(std::span<const double> squared_distances) {
+  for (std::size_t i = 0; i < squared_distances.size(); ++i)
+    if (!std::isfinite(squared_distances[i])) return i;
+  return std::nullopt;
+}
+
 KnnResult knn_query(const Knn& m, std::span<const double> x) {
   const Dataset& t = m.train;
   const std::size_t n = t.rows();
@@ -94,6 +100,10 @@ KnnResult knn_query(const Knn& m, std::span<const double> x) {
     }
     d2[i] = s;
   }
+  if (const auto row = first_overflow(d2))
+    throw DomainError("KNN: the squared distance from the sample to training row " + std::to_string(*row) +
+                      " overflows a double (each w_j (x_j - t_j)^2 and their sum must stay below 1.8e308, so "
+                      "|x_j - t_j| below about 1.3e154 at weight 1): the sample is outside the model's domain");
   std::vector<std::size_t> idx(n);
   std::iota(idx.begin(), idx.end(), std::size_t{0});
   const auto less = [&](std::size_t a, std::size_t b) {

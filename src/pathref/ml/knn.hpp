@@ -5,6 +5,7 @@
 /// Defaults are scikit-learn 1.2's KNeighborsClassifier (k = 5, uniform vote, Euclidean).
 /// Spec: spec/cin2021-ml.md#r[cin2021.eq4], #r[cin2021.eq5], #r[cin2021.knn]
 #include <cstddef>
+#include <optional>
 #include <span>
 #include <string_view>
 #include <vector>
@@ -46,12 +47,16 @@ struct KnnResult {
   bool distance_tie = false;  ///< a row outside the k has the same distance as the k-th
 };
 
+/// The index of the first squared distance that is not finite (an overflow of Eq. 4/5's sum:
+/// +inf, or NaN from 0 * inf at a zero weight), or nullopt. Spec: cin2021.knn (domain).
+[[nodiscard]] std::optional<std::size_t> first_overflow(std::span<const double> squared_distances);
+
 /// The k nearest training rows of x, ordered by (squared distance, training row index): the
 /// lower row index wins a distance tie, also at the k-th place. Votes per class (uniform or
 /// distance weights summed nearest first); the class with the most votes wins, a vote tie goes
 /// to the smallest class index. Spec: cin2021.knn.
-/// Pre: 1 <= k <= training rows, x.size() == features, weights empty or one >= 0 per feature
-/// (DomainError).
+/// Pre: 1 <= k <= training rows, x.size() == features, weights empty or one >= 0 per feature,
+/// every squared distance finite (no overflow, first_overflow; DomainError naming the row).
 [[nodiscard]] KnnResult knn_query(const Knn& m, std::span<const double> x);
 [[nodiscard]] int predict(const Knn& m, std::span<const double> x);
 

@@ -1,8 +1,10 @@
 #include "pathref/planners/planner.hpp"
+#include "pathref/planners/params_source.hpp"
 
 #include <algorithm>
 
 #include "pathref/core/error.hpp"
+#include "pathref/io/json_text.hpp"
 #include "pathref/planners/registry_list.hpp"
 
 namespace pathref::planners {
@@ -24,6 +26,49 @@ const Planner* find_planner(std::string_view name) {
   for (const Planner& p : planners())
     if (p.name == name) return &p;
   return nullptr;
+}
+
+std::string planner_names() {
+  std::string known;
+  for (const Planner& p : planners()) known += (known.empty() ? "" : ", ") + p.name;
+  return known;
+}
+
+std::optional<std::pair<std::string, std::string>> first_bad_param(const Planner& p, const Json& params) {
+  if (!params.is_object()) return std::nullopt;
+  for (const auto& [k, v] : params.items()) {
+    try {
+      (void)merge_params(p.defaults, Json{{k, v}});
+    } catch (const UsageError& e) {
+      return std::make_pair(k, std::string(e.what()));
+    }
+  }
+  return std::nullopt;
+}
+
+ParamsSource params_source(std::string_view text, std::string_view file, const std::string& pointer) {
+  ParamsSource out{std::string(file), 0, 0, pointer};
+  if (!text.empty()) {
+    const auto [line, column] = io::line_column(text, io::pointer_offset(text, pointer));
+    out.line = line;
+    out.column = column;
+  }
+  return out;
+}
+
+Result run_with_params_from(const Planner& p, const Request& req, const std::optional<ParamsSource>& source) {
+  if (!source || req.params.empty()) return p.run(req);
+  const auto located = [&](const Error& e) {
+    const std::string what = source->pointer + ": the planner " + p.name + " refused its parameters: " + e.what();
+    return source->line == 0 ? ParseError(source->file, what) : ParseError(source->file, source->line, source->column, what);
+  };
+  try {
+    return p.run(req);
+  } catch (const UsageError& e) {
+    throw located(e);
+  } catch (const DomainError& e) {
+    throw located(e);
+  }
 }
 
 Json merge_params(const Json& defaults, const Json& overrides) {

@@ -6,8 +6,10 @@
 /// Spec: spec/cli.md#plan, each planner's own spec file for its parameters and draw order.
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -89,6 +91,15 @@ struct Planner {
 [[nodiscard]] const std::vector<Planner>& planners();
 /// nullptr if unknown.
 [[nodiscard]] const Planner* find_planner(std::string_view name);
+
+/// The registered planners' names, comma-separated, for messages ("known: ...").
+[[nodiscard]] std::string planner_names();
+
+/// The first key of `params` (an object) that `p` cannot take — an unknown key, or a value of
+/// another JSON type than its default (merge_params' checks, one key at a time) — with
+/// merge_params' message; nullopt when every key can be taken. For readers that report the key
+/// at its place in a file (simulation scenarios: /planner/params/KEY).
+[[nodiscard]] std::optional<std::pair<std::string, std::string>> first_bad_param(const Planner& p, const Json& params);
 
 /// defaults overlaid with request.params; UsageError for a key not in defaults or a value of
 /// another JSON type than its default.

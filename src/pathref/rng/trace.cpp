@@ -48,7 +48,9 @@ TraceFile parse_trace(std::string_view text, std::string_view file_view) {
     at = nl + 1;
     if (l.find_first_not_of(" \t\r") == std::string_view::npos) continue;
     const nlohmann::json j = io::parse_json_text(l, file, line);
-    if (!j.is_object()) throw ParseError(file, line, 1, "a JSON object per line");
+    // Refusals at the offending value: FILE:LINE:COLUMN: /pointer: what (io::json_error_at).
+    const auto fail = [&](const char* ptr, const std::string& what) { throw io::json_error_at(l, file, ptr, what, line); };
+    if (!j.is_object()) fail("", "expected a JSON object per line, got " + io::json_kind(j));
     if (first) {
       first = false;
       if (j.value("format", "") == "pathref-trace") {
@@ -59,15 +61,16 @@ TraceFile parse_trace(std::string_view text, std::string_view file_view) {
     const auto num = [&](const char* key) -> const nlohmann::json& {
       const auto it = j.find(key);
       if (it == j.end() || !it->is_number())
-        throw ParseError(file, line, 1, std::string("a draw {\"i\": INDEX, \"u\": VALUE, ...} (no number \"") + key + "\")");
+        fail(it == j.end() ? "" : (key == std::string("i") ? "/i" : "/u"),
+             std::string("expected a draw {\"i\": INDEX, \"u\": VALUE, ...} (no number \"") + key + "\")");
       return *it;
     };
     const nlohmann::json& i = num("i");
     const double u = num("u").get<double>();
     if (!i.is_number_unsigned() || i.get<std::uint64_t>() != out.draws.size())
-      throw ParseError(file, line, 1, fmt::format("draw index {} (draws are numbered 0, 1, 2, ... in order), got {}",
-                                                  out.draws.size(), i.dump()));
-    if (!(u >= 0.0 && u < 1.0)) throw ParseError(file, line, 1, fmt::format("u in [0, 1), got {}", num("u").dump()));
+      fail("/i", fmt::format("expected draw index {} (draws are numbered 0, 1, 2, ... in order), got {}",
+                             out.draws.size(), i.dump()));
+    if (!(u >= 0.0 && u < 1.0)) fail("/u", fmt::format("expected u in [0, 1), got {}", num("u").dump()));
     Draw d{out.draws.size(), u, "", ""};
     if (const auto p = j.find("purpose"); p != j.end() && p->is_string()) d.purpose = p->get<std::string>();
     if (const auto c = j.find("context"); c != j.end() && c->is_string()) d.context = c->get<std::string>();

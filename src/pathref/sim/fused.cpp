@@ -16,6 +16,7 @@
 #include "pathref/grid/json_codec.hpp"
 #include "pathref/io/map_file.hpp"
 #include "pathref/planners/planner.hpp"
+#include "pathref/sim/simulate.hpp"
 
 namespace pathref::dwa {
 
@@ -92,7 +93,7 @@ DwaParams read_dwa(const Reader& rd, const Json& o, const std::string& ptr, DwaP
   if (const Json* v = find(o, "heading_target")) {
     const std::string s = rd.string(*v, ptr + "/heading_target");
     if (s != "key-node" && s != "waypoint" && s != "goal")
-      rd.fail(ptr + "/heading_target", "expected \"key-node\", \"waypoint\" or \"goal\", got \"" + s + "\"");
+      rd.fail(ptr + "/heading_target", "expected \"key-node\", \"waypoint\" or \"goal\", got \"" + io::printable(s) + "\"");
     if (target != nullptr)
       *target = s == "goal" ? HeadingTarget::goal : s == "waypoint" ? HeadingTarget::waypoint : HeadingTarget::key_node;
   }
@@ -171,6 +172,7 @@ FusedScenario read_scenario(const Reader& rd, const Json& doc, const std::string
   if (const Json* v = find(doc, "planner")) {
     if (v->is_string()) {
       s.planner = v->get<std::string>();
+      sim::check_planner(rd, s.planner, s.planner_params, "/planner");
     } else {
       rd.keys(*v, "/planner", {"name", "params"});
       const Json* n = find(*v, "name");
@@ -180,6 +182,7 @@ FusedScenario read_scenario(const Reader& rd, const Json& doc, const std::string
         if (!p->is_object()) rd.fail("/planner/params", "expected an object");
         s.planner_params = *p;
       }
+      sim::check_planner(rd, s.planner, s.planner_params, "/planner/name");
     }
   }
   if (const Json* v = find(doc, "seed")) s.seed = static_cast<std::uint32_t>(rd.integer(*v, "/seed", 0, 4294967295LL));
@@ -289,7 +292,9 @@ std::string scenario_format(std::string_view text) {
 FusedScenario parse_fused_scenario(std::string_view text, std::string_view file, const std::string& base_dir) {
   const Json doc = io::parse_json_text(text, file);
   const Reader rd(file, text);
-  return read_scenario(rd, doc, base_dir);
+  FusedScenario s = read_scenario(rd, doc, base_dir);
+  if (!s.planner_params.empty()) s.planner_params_at = planners::params_source(text, file, "/planner/params");
+  return s;
 }
 
 FusedScenario fused_scenario_from_json(const Json& doc, std::string_view file) {
@@ -340,7 +345,7 @@ FusedGlobal fused_global_path(const FusedScenario& s) {
     req.policy = s.policy;
     req.seed = s.seed;
     req.params = s.planner_params;
-    const planners::Result r = p->run(req);
+    const planners::Result r = planners::run_with_params_from(*p, req, s.planner_params_at);
     g.found = r.found && !r.path.empty();
     g.path = r.path;
   }

@@ -18,6 +18,7 @@
 
 #include "pathref/equations/dwa.hpp"
 #include "pathref/grid/grid.hpp"
+#include "pathref/planners/params_source.hpp"
 
 namespace pathref::dwa {
 
@@ -47,6 +48,8 @@ struct FusedScenario {
   std::vector<grid::Cell> path;  ///< explicit global path (key nodes or adjacent cells); empty: planner
   std::string planner = "astar";
   Json planner_params = Json::object();
+  /// Where planner_params were written (parse_fused_scenario), for the planner's refusals at run time.
+  std::optional<planners::ParamsSource> planner_params_at;
   std::uint32_t seed = 1;
   std::optional<double> heading0;
   double t_max = 300.0;

@@ -46,7 +46,37 @@ class Reader : public io::JsonReader {
 
 using io::find;
 
+/// "(x, y)" of a cell, for messages.
+[[nodiscard]] std::string cell_text(grid::Cell c) {
+  return "(" + std::to_string(c.x) + ", " + std::to_string(c.y) + ")";
+}
+
+/// A scenario's given path (han.sim.scenario-format): it runs from start to goal and every step
+/// is allowed under the corner policy (grid::step_allowed), each refusal at /path/N.
+void check_given_path(const io::JsonReader& rd, const Scenario& s) {
+  const std::size_t n = s.path.size();
+  if (!(s.path.front() == s.start))
+    rd.fail("/path/0", "expected the start " + cell_text(s.start) + ", got " + cell_text(s.path.front()));
+  for (std::size_t i = 1; i < n; ++i)
+    if (!grid::step_allowed(s.grid, s.path[i - 1], s.path[i], s.policy))
+      rd.fail("/path/" + std::to_string(i),
+              "expected a free cell one step from " + cell_text(s.path[i - 1]) + " allowed under the corner policy " +
+                  std::string(grid::to_string(s.policy)) + ", got " + cell_text(s.path[i]));
+  if (!(s.path.back() == s.goal))
+    rd.fail("/path/" + std::to_string(n - 1), "expected the goal " + cell_text(s.goal) + " as the last cell, got " +
+                                                  cell_text(s.path.back()));
+}
+
 }  // namespace
+
+void check_planner(const io::JsonReader& rd, const std::string& name, const Json& params,
+                   const std::string& name_ptr) {
+  const planners::Planner* p = planners::find_planner(name);
+  if (p == nullptr)
+    rd.fail(name_ptr, "expected a planner name (" + planners::planner_names() + "), got \"" + io::printable(name) + "\"");
+  if (const auto bad = planners::first_bad_param(*p, params))
+    rd.fail(io::JsonReader::child("/planner/params", bad->first), "expected a parameter of " + name + ": " + bad->second);
+}
 
 namespace {
 Scenario read_scenario(const Json& doc, std::string_view file, std::string_view text, const std::string& base_dir);
@@ -67,7 +97,7 @@ Scenario read_scenario(const Json& doc, std::string_view file, std::string_view 
   const Json* fmtv = find(doc, "format");
   if (fmtv == nullptr) rd.fail("/format", "missing (expected \"pathref-sim 1\")");
   if (rd.string(*fmtv, "/format") != "pathref-sim 1")
-    rd.fail("/format", "expected \"pathref-sim 1\", got " + fmtv->dump());
+    rd.fail("/format", "expected \"pathref-sim 1\", got \"" + io::printable(fmtv->get<std::string>()) + "\"");
   // --- map
   const Json* mapv = find(doc, "map");
   if (mapv == nullptr) rd.fail("/map", "missing (expected a map file name, rows or {\"random\": ...})");
@@ -145,17 +175,19 @@ Scenario read_scenario(const Json& doc, std::string_view file, std::string_view 
     try {
       s.policy = grid::parse_corner_policy(rd.string(*v, "/policy"));
     } catch (const UsageError&) {
-      rd.fail("/policy", "expected never, strict, one or always, got " + v->dump());
+      rd.fail("/policy", "expected never, strict, one or always, got \"" + io::printable(v->get<std::string>()) + "\"");
     }
   }
   if (const Json* v = find(doc, "path")) {
     if (!v->is_array() || v->empty() || v->size() > static_cast<std::size_t>(max_sim_cells))
       rd.fail("/path", "expected a non-empty array of cells");
     for (std::size_t i = 0; i < v->size(); ++i) s.path.push_back(rd.cell((*v)[i], "/path/" + std::to_string(i)));
+    check_given_path(rd, s);
   }
   if (const Json* v = find(doc, "planner")) {
     if (v->is_string()) {
       s.planner = v->get<std::string>();
+      check_planner(rd, s.planner, s.planner_params, "/planner");
     } else {
       rd.keys(*v, "/planner", {"name", "params"});
       const Json* n = find(*v, "name");
@@ -165,6 +197,7 @@ Scenario read_scenario(const Json& doc, std::string_view file, std::string_view 
         if (!p->is_object()) rd.fail("/planner/params", "expected an object, got " + Reader::kind(*p));
         s.planner_params = *p;
       }
+      check_planner(rd, s.planner, s.planner_params, "/planner/name");
     }
   }
   if (const Json* v = find(doc, "seed")) s.seed = static_cast<std::uint32_t>(rd.integer(*v, "/seed", 0, 4294967295LL));
@@ -206,7 +239,9 @@ Scenario read_scenario(const Json& doc, std::string_view file, std::string_view 
 
 Scenario parse_scenario(std::string_view text, std::string_view file, const std::string& base_dir) {
   const Json doc = io::parse_json_text(text, file);
-  return read_scenario(doc, file, text, base_dir);
+  Scenario s = read_scenario(doc, file, text, base_dir);
+  if (!s.planner_params.empty()) s.planner_params_at = planners::params_source(text, file, "/planner/params");
+  return s;
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -341,7 +376,7 @@ GlobalPath global_path(const Scenario& s) {
   req.policy = s.policy;
   req.seed = s.seed;
   req.params = s.planner_params;
-  const planners::Result r = p->run(req);
+  const planners::Result r = planners::run_with_params_from(*p, req, s.planner_params_at);
   out.found = r.found;
   out.path = r.path;
   out.length = r.found ? path_length(r.path) : 0.0;

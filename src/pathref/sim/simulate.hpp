@@ -10,6 +10,7 @@
 /// Spec: spec/han-sim.md (han.sim.scenario-format, han.sim.step, han.sim.wait, han.sim.detour,
 /// han.sim.run)
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -17,6 +18,8 @@
 #include <nlohmann/json.hpp>
 
 #include "pathref/grid/grid.hpp"
+#include "pathref/io/json_reader.hpp"
+#include "pathref/planners/params_source.hpp"
 #include "pathref/sim/encounter.hpp"
 
 namespace pathref::sim {
@@ -39,6 +42,8 @@ struct Scenario {
   std::vector<grid::Cell> path;      ///< explicit global path; empty: from `planner`
   std::string planner = "iaco-han";  ///< registered planner giving the global path
   Json planner_params = Json::object();
+  /// Where planner_params were written (parse_scenario), for the planner's refusals at run time.
+  std::optional<planners::ParamsSource> planner_params_at;
   std::uint32_t seed = 1;            ///< the planner's seed and the noise stream's
   double dt = 0.125;                 ///< time step, s
   double horizon = 3.0;              ///< prediction horizon H, s
@@ -68,6 +73,12 @@ inline constexpr std::int64_t max_sim_steps = 1000000;
 /// byte; then scenario_from_json. Spec: han.sim.scenario-format.
 [[nodiscard]] Scenario parse_scenario(std::string_view text, std::string_view file,
                                       const std::string& base_dir);
+
+/// The global planner of a scenario (pathref-sim 1 and 2): `name` a registered planner (refused at
+/// `name_ptr`, /planner or /planner/name) and every key of `params` one it takes with a value of
+/// its default's type (refused at /planner/params/KEY). Values a planner refuses only when it runs
+/// (a number out of its range) are reported by the run, with the planner's message.
+void check_planner(const io::JsonReader& rd, const std::string& name, const Json& params, const std::string& name_ptr);
 
 /// The robot's state in one trajectory sample: moving on its plan, waiting, moving on an evasion
 /// plan towards a refuge (han.sim.evade), or arrived at the goal.
