@@ -240,6 +240,9 @@ void check_document_shape(const Json& doc, const std::string& file, std::string_
     if (!group.is_object()) rd.fail(gp, "expected a test group (an object), got " + rd.kind(group));
     const Json& tol = need(group, gp, "tolerance", "an object {abs, rel, why}");
     if (!tol.is_object()) rd.fail(gp + "/tolerance", "expected an object {abs, rel, why}, got " + rd.kind(tol));
+    (void)rd.string(need(group, gp, "provenance", "where the expected values come from, a string"), gp + "/provenance");
+    if (const Json* params = io::find(group, "params"); params != nullptr && !params->is_object())
+      rd.fail(gp + "/params", "expected an object of inputs, got " + rd.kind(*params));
     for (const char* k : {"abs", "rel"}) {
       const Json& v = need(tol, gp + "/tolerance", k, "a number >= 0");
       (void)rd.number(v, gp + "/tolerance/" + k, 0.0, 1e308);
@@ -257,7 +260,24 @@ void check_document_shape(const Json& doc, const std::string& file, std::string_
       const std::string result = rd.string(need(test, tp, "result", "valid, invalid or acceptable"), tp + "/result");
       if (result != "valid" && result != "invalid" && result != "acceptable")
         rd.fail(tp + "/result", "expected \"valid\", \"invalid\" or \"acceptable\", got \"" + io::printable(result) + "\"");
-      (void)need(test, tp, "expected", "the expected output (null until generated)");
+      const Json& expected = need(test, tp, "expected", "the expected output (null until generated)");
+      if (result == "invalid" && !expected.is_null()) {
+        if (!expected.is_object()) rd.fail(tp + "/expected", "expected {\"error\": KIND} for an invalid test, got " + rd.kind(expected));
+        (void)rd.string(need(expected, tp + "/expected", "error", "the error kind, a string"), tp + "/expected/error");
+      }
+      if (const Json* in = io::find(test, "input"); in != nullptr && !in->is_object())
+        rd.fail(tp + "/input", "expected an object of inputs, got " + rd.kind(*in));
+      if (const Json* interp = io::find(test, "interpretation")) {
+        if (!interp->is_object()) rd.fail(tp + "/interpretation", "expected an object {NOTE: OPTION}, got " + rd.kind(*interp));
+        const Json* notes = io::find(doc, "notes");
+        for (auto it = interp->begin(); it != interp->end(); ++it) {
+          const std::string ip = io::JsonReader::child(tp + "/interpretation", it.key());
+          const Json* note = notes != nullptr ? io::find(*notes, it.key().c_str()) : nullptr;
+          const Json* param = note != nullptr ? io::find(*note, "param") : nullptr;
+          if (param == nullptr || !param->is_string())
+            rd.fail(ip, "expected the name of a note of /notes that has a \"param\" (an INTERPRETATION note)");
+        }
+      }
       if (const Json* tt = io::find(test, "tolerance")) {
         if (!tt->is_object()) rd.fail(tp + "/tolerance", "expected an object {abs, rel, why}, got " + rd.kind(*tt));
         for (const char* k : {"abs", "rel"})

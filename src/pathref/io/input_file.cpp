@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 
 #include "pathref/core/error.hpp"
+#include "pathref/io/json_text.hpp"
 
 namespace pathref::io {
 
@@ -45,7 +46,7 @@ class Fd {
 
 std::string read_input_file(const std::string& path, std::string_view what, std::uintmax_t max_bytes) {
   auto fail = [&](const std::string& reason) {
-    return UsageError(fmt::format("cannot read {} '{}': {}", what, path, reason));
+    return UsageError(fmt::format("cannot read {} '{}': {}", what, printable(path, 300), reason));
   };
   if (path.empty()) throw fail("the file name is empty");
   if (path.find('\0') != std::string::npos) throw fail("the file name contains a NUL byte");
@@ -58,7 +59,8 @@ std::string read_input_file(const std::string& path, std::string_view what, std:
   if (!S_ISREG(st.st_mode)) throw fail(file_kind(st.st_mode));
   const auto size = static_cast<std::uintmax_t>(st.st_size);
   if (size > max_bytes)
-    throw UsageError(fmt::format("{} '{}' has {} bytes, more than the limit of {}", what, path, size, max_bytes));
+    throw UsageError(
+        fmt::format("{} '{}' has {} bytes, more than the limit of {}", what, printable(path, 300), size, max_bytes));
   std::string out(static_cast<std::size_t>(size), '\0');
   std::size_t got = 0;
   while (got < out.size()) {
