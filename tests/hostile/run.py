@@ -119,7 +119,7 @@ def materialise(case: dict, casedir: str) -> dict[str, str]:
 
 # ---- substitution ------------------------------------------------------------------------------
 
-PLACEHOLDER = re.compile(r"\{(f|g|src|hostile|dir|pathref|python|deep|deepobj):?([^{}]*)\}")
+PLACEHOLDER = re.compile(r"\{(f|g|src|hostile|dir|pathref|python|deepobj|deep):?([^{}]*)\}")
 
 
 def substitute(text: str, ctx: dict, as_regex: bool) -> str:
@@ -179,7 +179,7 @@ def run_case(case: dict, opts, workroot: str) -> dict:
         argv = [opts.pathref] + [substitute(a, ctx, False) for a in case["args"]]
         stderr_re = substitute(case.get("stderr", ""), ctx, True)
         stdout_re = substitute(case.get("stdout", ""), ctx, True)
-    except (ManifestError, KeyError, OSError) as e:
+    except (ManifestError, KeyError, OSError, ValueError) as e:
         result["why"].append(f"broken case: {e}")
         return result
 
@@ -275,10 +275,22 @@ def run_case(case: dict, opts, workroot: str) -> dict:
     if len(out) + len(err) > max_output:
         why.append(f"OUTPUT: {len(out) + len(err)} bytes on stdout + stderr, more than {max_output}")
     text = err.decode("utf-8", "replace")
+    for rx in [stderr_re, stdout_re] + list(case.get("stderr_excludes", [])):
+        try:
+            re.compile(rx)
+        except re.error as e:
+            why.append(f"broken case: regex /{rx}/: {e}")
+            result["ok"] = False
+            return result
     if stderr_re and not re.search(stderr_re, text, re.S):
         why.append(f"stderr does not match /{stderr_re}/")
     if stdout_re and not re.search(stdout_re, out.decode("utf-8", "replace"), re.S):
         why.append(f"stdout does not match /{stdout_re}/")
+    output_re = case.get("output")
+    if output_re:
+        output_re = substitute(output_re, ctx, True)
+        if not re.search(output_re, out.decode("utf-8", "replace") + text, re.S):
+            why.append(f"neither stdout nor stderr matches /{output_re}/")
     if case.get("stderr_excludes"):
         for bad in case["stderr_excludes"]:
             if re.search(bad, text):
@@ -306,7 +318,7 @@ def load_manifest(path: str) -> dict:
             raise ManifestError(f"{path}: duplicate case id {case['id']}")
         seen.add(case["id"])
         codes = case["exit"] if isinstance(case["exit"], list) else [case["exit"]]
-        if 2 in codes and not case.get("stderr"):
+        if 2 in codes and not (case.get("stderr") or case.get("output")):
             raise ManifestError(f"{path}: case {case['id']}: a refused input needs a stderr regex")
         if case["needs"] not in doc["needs"]:
             raise ManifestError(f"{path}: case {case['id']}: needs {case['needs']!r} is not in 'needs'")
