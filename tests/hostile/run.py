@@ -16,7 +16,9 @@ at test time: deep nesting, FIFOs, directories, big answers) and must
                      terabytes of address space, so RLIMIT_AS cannot be used; ASAN_OPTIONS gets
                      hard_rss_limit_mb = 2 x the case's bound (ASan's redzones and quarantine)
                      and time bounds are scaled x5;
-  the peak RSS of the command (wait4) is checked against the same bound in both builds,
+  in both builds the runner also polls the RSS of the command's process group and kills it when
+  it passes the bound (a backstop: the only bound for children the rlimit does not reach), and
+  checks the peak RSS (wait4) against the bound,
 - write at most max_output bytes on stdout + stderr (default 1 MiB; issue 27 item 3).
 
 Usage: run.py PATHREF [--sanitize] [--only REGEX] [--items 1,6] [--list] [--verbose]
@@ -42,6 +44,7 @@ import time
 HERE = os.path.dirname(os.path.abspath(__file__))
 SOURCE = os.path.dirname(os.path.dirname(HERE))
 MIB = 1 << 20
+PAGE = os.sysconf("SC_PAGE_SIZE")
 
 DEFAULT_TIMEOUT = 10.0      # seconds per case, normal build (a hang guard)
 DEFAULT_MEMORY_MB = 1024    # address space per case, normal build
@@ -160,6 +163,26 @@ def substitute(text: str, ctx: dict, as_regex: bool) -> str:
 
 # ---- running one case --------------------------------------------------------------------------
 
+def group_rss_mb(pgid: int) -> float:
+    """The resident memory of every process of group pgid, in MiB (0 when /proc is unreadable)."""
+    total = 0
+    try:
+        pids = [int(p) for p in os.listdir("/proc") if p.isdigit()]
+    except OSError:
+        return 0.0
+    for pid in pids:
+        try:
+            with open(f"/proc/{pid}/stat", "rb") as f:
+                fields = f.read().rsplit(b")", 1)[1].split()
+            # fields[0] is field 3 (state): pgrp is field 5, rss (pages) field 24
+            if int(fields[2]) != pgid:
+                continue
+            total += int(fields[21]) * PAGE
+        except (OSError, ValueError, IndexError):
+            continue
+    return total / MIB
+
+
 def describe_signal(n: int) -> str:
     try:
         return f"signal {n} ({signal.Signals(n).name})"
@@ -206,6 +229,7 @@ def run_case(case: dict, opts, workroot: str) -> dict:
     stdin_spec = case.get("stdin")
     start = time.monotonic()
     timed_out = False
+    over_rss = 0.0
     with open(out_path, "wb") as out_f, open(err_path, "wb") as err_f:
         stdin = subprocess.DEVNULL
         if stdin_spec is not None:
@@ -223,6 +247,17 @@ def run_case(case: dict, opts, workroot: str) -> dict:
             pid, st, ru = os.wait4(proc.pid, os.WNOHANG)
             if pid == proc.pid:
                 status, rusage = st, ru
+                break
+            rss = group_rss_mb(proc.pid)
+            if rss > rss_bound_mb:
+                # backstop of the memory bound (the only one for a program the rlimit does not
+                # cover): the whole process group is killed as soon as it is seen over the bound
+                over_rss = rss
+                try:
+                    os.killpg(proc.pid, signal.SIGKILL)
+                except ProcessLookupError:
+                    pass
+                _, status, rusage = os.wait4(proc.pid, 0)
                 break
             if time.monotonic() - start > timeout:
                 timed_out = True
@@ -244,10 +279,13 @@ def run_case(case: dict, opts, workroot: str) -> dict:
     result["stderr"] = err[:2000].decode("utf-8", "replace")
     code = None
     why = result["why"]
-    if timed_out:
+    if over_rss:
+        why.append(f"MEMORY: the process group reached {over_rss:.0f} MiB of RSS, over the bound of "
+                   f"{rss_bound_mb} MiB (killed)")
+    elif timed_out:
         why.append(f"HANG: no exit within {timeout:g} s (killed; bound of this case"
                    f"{', x5 under the sanitizers' if opts.sanitize else ''})")
-    elif os.WIFSIGNALED(status):
+    elif os.WIFSIGNALED(status) and not over_rss:
         sig = os.WTERMSIG(status)
         extra = ""
         if sig == signal.SIGXFSZ:
