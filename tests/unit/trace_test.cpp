@@ -101,6 +101,10 @@ TEST_CASE("trace: malformed traces are ParseErrors at their line", "[rng][trace]
   CHECK(message("[1,2]\n").find("a JSON object per line") != std::string::npos);
   CHECK(message("{\"i\":0,\"u\":0.5}\n\n{\"i\":1,\"u\":\n").find("t.jsonl:3:") != std::string::npos);
   CHECK(message("{\"i\":-1,\"u\":0.5}\n").find("draw index 0") != std::string::npos);
+  // A first line whose "format" is not a string is a draw, not a header (was: a library type_error
+  // escaping as an internal error, exit 3; fuzz/corpus/trace_file/crash-format-not-string.jsonl).
+  CHECK(message("{\"format\":1}\n").find("t.jsonl:1:1: a draw") != std::string::npos);
+  CHECK(rng::parse_trace("{\"format\":[1],\"i\":0,\"u\":0.5}\n", "t.jsonl").draws.size() == 1);
   // A user's minimal trace: no header, no purpose, no context; blank lines ignored.
   CHECK(rng::parse_trace("\n{\"i\":0,\"u\":0.5}\r\n{\"i\":1,\"u\":0}\n", "t.jsonl").draws.size() == 2);
 }

@@ -53,7 +53,9 @@ TraceFile parse_trace(std::string_view text, std::string_view file_view) {
     if (!j.is_object()) fail("", "expected a JSON object per line, got " + io::json_kind(j));
     if (first) {
       first = false;
-      if (j.value("format", "") == "pathref-trace") {
+      // find, not value("format", ""): value() throws a library type_error when "format" is not a
+      // string (found by the trace_file fuzz target, issue 27)
+      if (const auto f = j.find("format"); f != j.end() && *f == "pathref-trace") {
         out.header = j;
         continue;
       }
