@@ -288,7 +288,8 @@ int run_conform(const ConformOptions& o) {
             refused = e.what();
           }
           if (refused) {
-            message = "the answer is not acceptable JSON (" + io::printable(*refused, 300) + ")";
+            message = "the answer is not a JSON object: " + io::printable(*reply, 200) + " (" +
+                      io::printable(*refused, 300) + ")";
             got = answer_excerpt(*reply);
           } else if (!got.is_object()) {
             message = "the answer is not a JSON object: " + io::printable(*reply, 200);

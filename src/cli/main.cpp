@@ -1,6 +1,11 @@
 // pathref: the command-line front end of the reference implementation.
 #include <fmt/core.h>
 
+#include <algorithm>
+#include <string_view>
+#include <system_error>
+#include <vector>
+
 #include <cstdio>
 #include <exception>
 
@@ -35,8 +40,16 @@ int main(int argc, char** argv) {
   pathref::cli::add_reproduce_command(app, run);
   pathref::cli::add_learn_commands(app, run);
   pathref::cli::add_trace_diff_command(app, run);
+  // `pathref classify ... -- v1 v2`: classify takes every non-option argument as a value, so a
+  // `--` (the usual end-of-options mark, which CLI11 would hand to the top-level app) is dropped
+  // there (spec/cin2021-ml.md, classify).
+  std::vector<char*> args(argv, argv + argc);
+  if (argc > 1 && std::string_view(argv[1]) == "classify") {
+    const auto dd = std::find_if(args.begin() + 2, args.end(), [](const char* a) { return std::string_view(a) == "--"; });
+    if (dd != args.end()) args.erase(dd);
+  }
   try {
-    app.parse(argc, argv);
+    app.parse(static_cast<int>(args.size()), args.data());
   } catch (const CLI::ParseError& e) {
     const int code = app.exit(e);
     // CLI11 returns 0 for --help/--version; every real argument error is exit 2.
@@ -49,6 +62,11 @@ int main(int argc, char** argv) {
     return 2;
   } catch (const pathref::Error& e) {
     fmt::print(stderr, "pathref: {}: {}\n", e.kind(), e.what());
+    return 2;
+  } catch (const std::system_error& e) {
+    // Writing a result failed (standard output or a file: full disk, a file size limit, a closed
+    // pipe): the environment refused the output, not a defect (spec/cli.md#exit-codes).
+    fmt::print(stderr, "pathref: error: cannot write the output: {}\n", e.what());
     return 2;
   } catch (const std::exception& e) {
     fmt::print(stderr, "pathref: internal error: {}\n", e.what());

@@ -1,5 +1,7 @@
 #include "pathref/io/grid_text.hpp"
 
+#include "pathref/io/input_file.hpp"
+
 #include <fmt/core.h>
 
 #include <cerrno>
@@ -341,22 +343,7 @@ std::string to_grid_text(const MapFile& map) {
 }
 
 MapFile read_grid_file(const std::string& path) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  const auto status = fs::status(path, ec);
-  if (ec || !fs::exists(status))
-    throw UsageError(fmt::format("cannot read map file '{}': {}", path,
-                                 ec ? ec.message() : std::string("no such file")));
-  if (!fs::is_regular_file(status))
-    throw UsageError(fmt::format("cannot read map file '{}': not a regular file", path));
-  const auto size = fs::file_size(path, ec);
-  if (ec) throw UsageError(fmt::format("cannot read map file '{}': {}", path, ec.message()));
-  if (size > max_map_file_bytes)
-    throw UsageError(fmt::format("map file '{}' has {} bytes, more than the limit of {}", path, size,
-                                 max_map_file_bytes));
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw UsageError(fmt::format("cannot open map file '{}': {}", path, std::strerror(errno)));
-  const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  const std::string text = read_input_file(path, "map file", max_map_file_bytes);
   return parse_grid_text(text, path);
 }
 

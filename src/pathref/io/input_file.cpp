@@ -44,37 +44,76 @@ class Fd {
 
 }  // namespace
 
-std::string read_input_file(const std::string& path, std::string_view what, std::uintmax_t max_bytes) {
-  auto fail = [&](const std::string& reason) {
-    return UsageError(fmt::format("cannot read {} '{}': {}", what, printable(path, 300), reason));
-  };
-  if (path.empty()) throw fail("the file name is empty");
-  if (path.find('\0') != std::string::npos) throw fail("the file name contains a NUL byte");
+namespace {
+
+enum class Refusal { none, unreadable, too_large };
+
+/// The shared body: the content, or the refusal and its reason (and the size when too large).
+Refusal read_bounded(const std::string& path, std::uintmax_t max_bytes, std::string& out, std::string& reason,
+                     std::uintmax_t& size) {
+  if (path.empty()) {
+    reason = "the file name is empty";
+    return Refusal::unreadable;
+  }
+  if (path.find('\0') != std::string::npos) {
+    reason = "the file name contains a NUL byte";
+    return Refusal::unreadable;
+  }
   // O_NONBLOCK: opening a FIFO with no writer must not wait; the descriptor is only read after
   // fstat says it is a regular file, for which O_NONBLOCK changes nothing.
   const Fd fd(::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC | O_NOCTTY));
-  if (fd.get() < 0) throw fail(std::strerror(errno));
+  if (fd.get() < 0) {
+    reason = std::strerror(errno);
+    return Refusal::unreadable;
+  }
   struct stat st {};
-  if (::fstat(fd.get(), &st) != 0) throw fail(std::strerror(errno));
-  if (!S_ISREG(st.st_mode)) throw fail(file_kind(st.st_mode));
-  const auto size = static_cast<std::uintmax_t>(st.st_size);
-  if (size > max_bytes)
-    throw UsageError(
-        fmt::format("{} '{}' has {} bytes, more than the limit of {}", what, printable(path, 300), size, max_bytes));
-  std::string out(static_cast<std::size_t>(size), '\0');
+  if (::fstat(fd.get(), &st) != 0) {
+    reason = std::strerror(errno);
+    return Refusal::unreadable;
+  }
+  if (!S_ISREG(st.st_mode)) {
+    reason = file_kind(st.st_mode);
+    return Refusal::unreadable;
+  }
+  size = static_cast<std::uintmax_t>(st.st_size);
+  if (size > max_bytes) {
+    reason = fmt::format("it has {} bytes, more than the limit of {}", size, max_bytes);
+    return Refusal::too_large;
+  }
+  out.assign(static_cast<std::size_t>(size), '\0');
   std::size_t got = 0;
   while (got < out.size()) {
     const ssize_t n = ::read(fd.get(), out.data() + got, out.size() - got);
     if (n < 0) {
       if (errno == EINTR) continue;
-      throw fail(std::strerror(errno));
+      reason = std::strerror(errno);
+      return Refusal::unreadable;
     }
     if (n == 0) break;  // the file shrank while read: what is there is the content
     got += static_cast<std::size_t>(n);
   }
-  out.resize(got);
-  // A file that grew while read is read up to the size fstat gave (the limit holds either way).
-  return out;
+  out.resize(got);  // a file that grew while read is read up to the size fstat gave
+  return Refusal::none;
+}
+
+}  // namespace
+
+bool try_read_input_file(const std::string& path, std::uintmax_t max_bytes, std::string& out, std::string& reason) {
+  std::uintmax_t size = 0;
+  return read_bounded(path, max_bytes, out, reason, size) == Refusal::none;
+}
+
+std::string read_input_file(const std::string& path, std::string_view what, std::uintmax_t max_bytes) {
+  std::string out, reason;
+  std::uintmax_t size = 0;
+  switch (read_bounded(path, max_bytes, out, reason, size)) {
+    case Refusal::none: return out;
+    case Refusal::too_large:
+      throw UsageError(
+          fmt::format("{} '{}' has {} bytes, more than the limit of {}", what, printable(path, 300), size, max_bytes));
+    case Refusal::unreadable: break;
+  }
+  throw UsageError(fmt::format("cannot read {} '{}': {}", what, printable(path, 300), reason));
 }
 
 }  // namespace pathref::io

@@ -18,4 +18,11 @@ namespace pathref::io {
 /// than the limit of M`. `what` names the file's role ("map file", "model file", ...).
 [[nodiscard]] std::string read_input_file(const std::string& path, std::string_view what, std::uintmax_t max_bytes);
 
+/// read_input_file for a caller that reports a refusal in its own words (a ROS map's image is
+/// reported at the YAML line that names it): true with the content in `out`, or false with
+/// `reason` ("No such file or directory", "it is a FIFO (named pipe), not a regular file", "it has
+/// N bytes, more than the limit of M", ...). Never blocks; reads nothing from a non-regular file.
+[[nodiscard]] bool try_read_input_file(const std::string& path, std::uintmax_t max_bytes, std::string& out,
+                                       std::string& reason);
+
 }  // namespace pathref::io

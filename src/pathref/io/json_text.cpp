@@ -300,9 +300,12 @@ Outcome parse_bounded(std::string_view text, const JsonLimits& limits, Json& out
       return {Refusal::depth, nth_open(text, dom.opens()), dom.message()};
     case Refusal::duplicate_key:
       return {Refusal::duplicate_key, nth_key(text, dom.keys()), dom.message()};
-    case Refusal::syntax:
+    case Refusal::syntax: {
+      const std::string what = syntax_message(dom.message());
+      const bool overflow = what.find("number overflow") != std::string::npos;
       return {Refusal::syntax, dom.position() > 0 ? dom.position() - 1 : 0,
-              "valid JSON (" + syntax_message(dom.message()) + ")"};
+              (overflow ? "a number within the range of a double (" : "valid JSON (") + what + ")"};
+    }
     case Refusal::none: break;
   }
   // The thrown error: find where with a second, value-less pass that stops at the same byte.

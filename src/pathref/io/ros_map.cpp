@@ -1,5 +1,8 @@
 #include "pathref/io/ros_map.hpp"
 
+#include "pathref/io/input_file.hpp"
+#include "pathref/io/json_text.hpp"
+
 #include <fmt/core.h>
 
 #include <charconv>
@@ -723,28 +726,20 @@ RosMap parse_ros_map(std::string_view yaml_text, std::string_view yaml_name, std
 }
 
 namespace {
-/// Reads a file for load_ros_map; throws `fail(reason)` when it cannot.
+/// Reads a file for load_ros_map through io::read_input_file's checks; throws `fail(reason)`
+/// when it cannot (spec/formats.md#input-files).
 template <class Fail>
 std::string read_file_bytes(const std::string& path, Fail fail) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  const auto status = fs::status(path, ec);
-  if (ec || !fs::exists(status)) fail(ec ? ec.message() : std::string("no such file"));
-  if (!fs::is_regular_file(status)) fail("not a regular file");
-  const auto size = fs::file_size(path, ec);
-  if (ec) fail(ec.message());
-  if (size > max_map_file_bytes)
-    fail(fmt::format("it has {} bytes, more than the limit of {}", size, max_map_file_bytes));
-  std::ifstream in(path, std::ios::binary);
-  if (!in) fail(std::strerror(errno));
-  return std::string{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  std::string out, reason;
+  if (!try_read_input_file(path, max_map_file_bytes, out, reason)) fail(reason);
+  return out;
 }
 }  // namespace
 
 RosMap load_ros_map(const std::string& yaml_path, const RosMapOptions& options) {
   namespace fs = std::filesystem;
   const std::string yaml = read_file_bytes(yaml_path, [&](const std::string& reason) {
-    throw UsageError(fmt::format("cannot read map file '{}': {}", yaml_path, reason));
+    throw UsageError(fmt::format("cannot read map file '{}': {}", printable(yaml_path, 300), reason));
   });
   const RosMapMeta meta = parse_ros_yaml(yaml, yaml_path, options.allow_unknown_keys);
   fs::path image = fs::path(meta.image);
@@ -752,7 +747,7 @@ RosMap load_ros_map(const std::string& yaml_path, const RosMapOptions& options) 
   const std::string image_path = image.string();
   const std::string bytes = read_file_bytes(image_path, [&](const std::string& reason) {
     throw ParseError(yaml_path, meta.image_line, meta.image_column,
-                     fmt::format("cannot read image file '{}': {}", image_path, reason));
+                     fmt::format("cannot read image file '{}': {}", printable(image_path, 300), reason));
   });
   const PgmImage img = parse_pgm(bytes, image_path);
   return ros_map_from_image(img, meta, options, image_path);

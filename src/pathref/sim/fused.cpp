@@ -117,7 +117,15 @@ FusedScenario read_scenario(const Reader& rd, const Json& doc, const std::string
     io::MapReadOptions opt;
     opt.limits.max_cells = 1000000;
     opt.limits.max_side = 1000000;
-    auto loaded = io::load_map_file(fp.string(), opt);
+    // A map file that cannot be read as a grid (missing, unreadable, a polygon scene) is reported at
+    // this file's /map; the map file's own syntax errors keep their own file, line and column.
+    io::LoadedMapFile loaded = [&] {
+      try {
+        return io::load_map_file(fp.string(), opt);
+      } catch (const UsageError& e) {
+        rd.fail("/map", e.what());
+      }
+    }();
     s.grid = std::move(loaded.map.grid);
     fstart = loaded.map.start;
     fgoal = loaded.map.goal;

@@ -109,7 +109,15 @@ Scenario read_scenario(const Json& doc, std::string_view file, std::string_view 
     io::MapReadOptions opt;
     opt.limits.max_cells = max_sim_cells;
     opt.limits.max_side = max_sim_cells;
-    auto loaded = io::load_map_file(p.string(), opt);
+    // A map file that cannot be read as a grid (missing, unreadable, a polygon scene) is reported at
+    // this file's /map; the map file's own syntax errors keep their own file, line and column.
+    io::LoadedMapFile loaded = [&] {
+      try {
+        return io::load_map_file(p.string(), opt);
+      } catch (const UsageError& e) {
+        rd.fail("/map", e.what());
+      }
+    }();
     s.grid = std::move(loaded.map.grid);
     map_start = loaded.map.start;
     map_goal = loaded.map.goal;

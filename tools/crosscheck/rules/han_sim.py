@@ -429,6 +429,10 @@ class _ParseError(Exception):
     pass
 
 
+class ParseError(Exception):
+    """A malformed scenario (the C++ ParseError of the scenario reader)."""
+
+
 def _astar_path(rows_blocked, w, h, start, goal, policy):
     m = _search.Map(["." * w])
     m.w, m.h, m.blocked = w, h, rows_blocked
@@ -441,9 +445,13 @@ def _global_path(m, s, start, goal, policy):
     for iaco-han and for iaco-astar with its global planner)."""
     if "path" in s:
         gp = [tuple(c) for c in s["path"]]
-        require(gp[0] == start and gp[-1] == goal, "path from start to goal")
+        # A given path is checked while the scenario is read (spec/han-sim.md,
+        # han.sim.scenario-format): a malformed scenario, ParseError at /path/N.
+        if not (gp[0] == start and gp[-1] == goal):
+            raise ParseError("/path: from the start to the goal")
         for a, b in zip(gp, gp[1:]):
-            require(_search.allowed(m, a, b, policy), "path step allowed")
+            if not _search.allowed(m, a, b, policy):
+                raise ParseError("/path: a step allowed under the corner policy")
         return True, gp
     planner = s.get("planner", "iaco-han")
     params = {}
