@@ -60,6 +60,26 @@ class CheckLayersTest(unittest.TestCase):
         self.put("src/pathref/core/bad.hpp", '#include "pathref/rules/registry.hpp"\n')
         self.assertEqual(self.run_tool().returncode, 1)
 
+    def test_known_list_is_a_ratchet(self):
+        self.put("src/pathref/geometry/scene.cpp", '#include "pathref/io/map_file.hpp"\n')
+        known = os.path.join(self.root, "known.txt")
+        with open(known, "w") as f:
+            f.write('# comment\nsrc/pathref/geometry/scene.cpp: #include "pathref/io/map_file.hpp"\n')
+        run = lambda: subprocess.run([sys.executable, TOOL, "--root", self.root, "--known", known],
+                                     capture_output=True, text=True)
+        self.assertEqual(run().returncode, 0)
+        # a new violation outside the list fails
+        self.put("src/pathref/rng/trace.cpp", '#include "pathref/io/json_text.hpp"\n')
+        r = run()
+        self.assertEqual(r.returncode, 1)
+        self.assertIn("src/pathref/rng/trace.cpp:1: rng (layer 1) includes io (layer 5)", r.stdout)
+        os.remove(os.path.join(self.root, "src/pathref/rng/trace.cpp"))
+        # a listed violation that was fixed must leave the list
+        self.put("src/pathref/geometry/scene.cpp", '#include "pathref/grid/grid.hpp"\n')
+        r = run()
+        self.assertEqual(r.returncode, 1)
+        self.assertIn("no longer runs against the order", r.stdout)
+
 
 if __name__ == "__main__":
     unittest.main()
