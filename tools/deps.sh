@@ -1,13 +1,20 @@
 #!/usr/bin/env bash
 # Installs the Debian bookworm packages pathref needs, only those missing (apt-get, as root).
-# Sourced by tools/demo and tools/test; safe to run again.
+# Usage: bash tools/deps.sh          what building the library and the CLI needs (tools/demo)
+#        bash tools/deps.sh --test   that, plus what the tests need (tools/test: Catch2,
+#                                    RapidCheck, clang + libFuzzer, Python with scikit-learn and
+#                                    SciPy, pybind11, librsvg for the figure checks, ...)
+# Safe to run again.
 set -euo pipefail
-PATHREF_PACKAGES=(cmake ninja-build g++ clang libclang-rt-14-dev python3
-  libeigen3-dev librapidcheck-dev catch2 libcgal-dev libgmp-dev libmpfr-dev
-  libfmt-dev nlohmann-json3-dev libcli11-dev libbenchmark-dev
-  libsvm-dev python3-sklearn python3-scipy parallel
-  pybind11-dev python3-dev python3-numpy python3-pytest
-  librsvg2-bin fonts-dejavu-core)
+PATHREF_PACKAGES=(cmake ninja-build g++
+  libeigen3-dev libcgal-dev libgmp-dev libmpfr-dev
+  libfmt-dev nlohmann-json3-dev libcli11-dev libsvm-dev)
+if [[ "${1:-}" == "--test" ]]; then
+  PATHREF_PACKAGES+=(clang libclang-rt-14-dev python3 librapidcheck-dev catch2 libbenchmark-dev
+    python3-sklearn python3-scipy parallel
+    pybind11-dev python3-dev python3-numpy python3-pytest
+    librsvg2-bin fonts-dejavu-core)
+fi
 missing=()
 for p in "${PATHREF_PACKAGES[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
