@@ -19,6 +19,7 @@
 #include "pathref/io/ros_map.hpp"
 #include "pathref/ml/classifier.hpp"
 #include "pathref/planners/planner.hpp"
+#include "pathref/io/trace_file.hpp"
 #include "pathref/rng/trace.hpp"
 #include "pathref/sim/fused.hpp"
 #include "pathref/sim/simulate.hpp"
@@ -295,7 +296,7 @@ TEST_CASE("formats: readers quote input through io::printable (no raw NUL or BOM
   clean(message_of([&] { (void)io::parse_ros_yaml("image: m.pgm\nresolution: 0." + bom + "05\n", "m.yaml"); }));
   clean(message_of([&] { (void)io::parse_path_text("1 2\n3 " + bom + "4\n", "p.txt", io::PathFormat::automatic, false); }));
   clean(message_of([&] { (void)io::parse_path_text("1 2\n3 4" + nul + "\n", "p.txt", io::PathFormat::automatic, false); }));
-  clean(message_of([&] { (void)rng::parse_trace("{\"i\": 0, \"u\": 2, \"" + bom + "\": 1}\n", "t.jsonl"); }));
-  const std::string t = message_of([&] { (void)rng::parse_trace("{\"i\": 1, \"u\": 0.5}\n", "t.jsonl"); });
+  clean(message_of([&] { (void)io::parse_trace("{\"i\": 0, \"u\": 2, \"" + bom + "\": 1}\n", "t.jsonl"); }));
+  const std::string t = message_of([&] { (void)io::parse_trace("{\"i\": 1, \"u\": 0.5}\n", "t.jsonl"); });
   CHECK(t == "t.jsonl:1:7: /i: expected draw index 0 (draws are numbered 0, 1, 2, ... in order), got 1");
 }
