@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
+#include "pathref/io/wall_following.hpp"
 #include "pathref/io/json_text.hpp"
 #include "pathref/io/map_file.hpp"
 #include "pathref/core/error.hpp"
@@ -125,7 +126,7 @@ int run_learn(const LearnOptions& o) {
   const std::uint32_t seed = parse_seed(o.seed);
   const Params params = parse_params(o.set, seed);
   const std::vector<Kind> kinds = parse_kinds(o.classifiers);
-  const Dataset d = read_wall_following(o.data);
+  const Dataset d = io::read_wall_following(o.data);
   Json protocol;
   std::vector<int> folds;  // cv: fold per row; holdout: 1 = test, 0 = train
   if (!o.cv.empty()) {

@@ -11,6 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "pathref/io/wall_following.hpp"
 #include "pathref/core/error.hpp"
 #include "pathref/io/grid_text.hpp"
 #include "pathref/io/map_file.hpp"
@@ -286,10 +287,10 @@ TEST_CASE("formats: readers quote input through io::printable (no raw NUL or BOM
   CHECK(g1.find("unknown keyword 'si\\x00ze'") != std::string::npos);
   clean(message_of([&] { (void)io::parse_grid_text("pathref-grid " + bom + "1\n", "g.txt"); }));
   clean(message_of([&] { (void)io::parse_grid_text("pathref-grid 1\nsize 3" + nul + " 3\n", "g.txt"); }));
-  const std::string d = message_of([&] { (void)ml::parse_wall_following("1,2,Move-Forward\n1," + bom + "2,Move-Forward\n", "d.data"); });
+  const std::string d = message_of([&] { (void)io::parse_wall_following("1,2,Move-Forward\n1," + bom + "2,Move-Forward\n", "d.data"); });
   clean(d);
   CHECK(d.find("'\\xEF\\xBB\\xBF2'") != std::string::npos);
-  clean(message_of([&] { (void)ml::parse_wall_following("1,2,Move" + nul + "Forward\n", "d.data"); }));
+  clean(message_of([&] { (void)io::parse_wall_following("1,2,Move" + nul + "Forward\n", "d.data"); }));
   clean(message_of([&] { (void)io::parse_ros_yaml("image: m.pgm\nresolution: 0.05\norigin: [0, 0, 0]\nnegate: 0\n"
                                                   "occupied_thresh: 0.65\nfree_thresh: 0.196\nk" + bom + "ey: 1\n",
                                                   "m.yaml"); }));
