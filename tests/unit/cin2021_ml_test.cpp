@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "pathref/io/model_file.hpp"
 #include "pathref/io/wall_following.hpp"
 #include "pathref/core/error.hpp"
 #include "pathref/ml/classifier.hpp"
@@ -281,13 +282,13 @@ TEST_CASE("cin2021 model file: every classifier round-trips through JSON", "[cin
   for (const Kind k : {Kind::mnb, Kind::gnb, Kind::svm, Kind::knn, Kind::rf, Kind::tree}) {
     INFO(to_string(k));
     const Model m = train(k, d, p);
-    const Model r = model_from_json(nlohmann::json::parse(to_json(m).dump()), "m.json");
+    const Model r = pathref::io::model_from_json(nlohmann::json::parse(pathref::io::to_json(m).dump()), "m.json");
     for (std::size_t i = 0; i < d.rows(); ++i) CHECK(predict(r, d.row(i)) == predict(m, d.row(i)));
   }
-  nlohmann::json bad = to_json(train(Kind::gnb, d, p));
+  nlohmann::json bad = pathref::io::to_json(train(Kind::gnb, d, p));
   bad["version"] = 2;
-  CHECK_THROWS_AS(model_from_json(bad, "m.json"), ParseError);
+  CHECK_THROWS_AS(pathref::io::model_from_json(bad, "m.json"), ParseError);
   bad["version"] = 1;
   bad["model"]["var"][0] = -1.0;
-  CHECK_THROWS_AS(model_from_json(bad, "m.json"), ParseError);
+  CHECK_THROWS_AS(pathref::io::model_from_json(bad, "m.json"), ParseError);
 }
