@@ -15,6 +15,7 @@
 #include <string>
 #include <string_view>
 
+#include "pathref/io/scene_json.hpp"
 #include "pathref/core/error.hpp"
 #include "pathref/geometry/inflation.hpp"
 #include "pathref/geometry/scene.hpp"
@@ -24,7 +25,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::string_view text(reinterpret_cast<const char*>(data), size);
   std::optional<g::Scene> s;
   try {
-    s = g::parse_scene_json(text, "fuzz.json");
+    s = pathref::io::parse_scene_json(text, "fuzz.json");
   } catch (const pathref::ParseError&) {
     return 0;
   }

@@ -16,6 +16,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "pathref/io/model_file.hpp"
 #include "pathref/core/error.hpp"
 #include "pathref/io/json_text.hpp"
 #include "pathref/ml/classifier.hpp"
@@ -34,14 +35,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::string_view text(reinterpret_cast<const char*>(data), size);
   ml::Model m;
   try {
-    m = ml::model_from_json(io::parse_json_text(text, "fuzz.json"), "fuzz.json");
+    m = io::model_from_json(io::parse_json_text(text, "fuzz.json"), "fuzz.json");
   } catch (const ParseError& e) {
     check_message(e.what(), text);
     return 0;
   }
   if (m.features < 1 || m.features > 64 || m.classes < 1 || m.classes > 64) __builtin_trap();
-  const nlohmann::json once = ml::to_json(m);
-  const nlohmann::json twice = ml::to_json(ml::model_from_json(once, "back.json"));
+  const nlohmann::json once = io::to_json(m);
+  const nlohmann::json twice = io::to_json(io::model_from_json(once, "back.json"));
   if (once != twice) __builtin_trap();
   for (const double v : {0.0, 1.0}) {
     const std::vector<double> x(m.features, v);

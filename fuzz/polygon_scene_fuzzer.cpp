@@ -10,6 +10,7 @@
 #include <string>
 #include <string_view>
 
+#include "pathref/io/scene_json.hpp"
 #include "pathref/core/error.hpp"
 #include "pathref/geometry/scene.hpp"
 
@@ -17,12 +18,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::string_view text(reinterpret_cast<const char*>(data), size);
   std::optional<pathref::geometry::Scene> s;
   try {
-    s = pathref::geometry::parse_scene_json(text, "fuzz.json");
+    s = pathref::io::parse_scene_json(text, "fuzz.json");
   } catch (const pathref::ParseError&) {
     return 0;
   }
-  const std::string canonical = pathref::geometry::to_scene_json(*s);
-  const pathref::geometry::Scene again = pathref::geometry::parse_scene_json(canonical, "canonical.json");
+  const std::string canonical = pathref::io::to_scene_json(*s);
+  const pathref::geometry::Scene again = pathref::io::parse_scene_json(canonical, "canonical.json");
   if (!(again == *s)) __builtin_trap();
   return 0;
 }

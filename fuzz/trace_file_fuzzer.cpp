@@ -1,4 +1,4 @@
-// Fuzz target: draw traces of `pathref trace-diff` (spec/rng.md#draw-traces): rng::parse_trace,
+// Fuzz target: draw traces of `pathref trace-diff` (spec/rng.md#draw-traces): io::parse_trace,
 // which reads each line through io::parse_json_text, and rng::first_divergence.
 //
 // INVARIANT: for every byte string t, parse_trace(t) either returns a TraceFile or throws
@@ -15,14 +15,15 @@
 #include <string_view>
 
 #include "pathref/core/error.hpp"
+#include "pathref/io/trace_file.hpp"
 #include "pathref/rng/trace.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace pathref;
   const std::string_view text(reinterpret_cast<const char*>(data), size);
-  rng::TraceFile t;
+  io::TraceFile t;
   try {
-    t = rng::parse_trace(text, "fuzz.jsonl");
+    t = io::parse_trace(text, "fuzz.jsonl");
   } catch (const ParseError& e) {
     for (const char c : std::string(e.what()))
       if (static_cast<unsigned char>(c) < 0x20) __builtin_trap();
@@ -36,7 +37,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     std::snprintf(line, sizeof line, "{\"i\": %zu, \"u\": %.17g}\n", i, d.value);
     back += line;
   }
-  const rng::TraceFile again = rng::parse_trace(back, "back.jsonl");
+  const io::TraceFile again = io::parse_trace(back, "back.jsonl");
   if (again.draws.size() != t.draws.size()) __builtin_trap();
   for (std::size_t i = 0; i < t.draws.size(); ++i)
     if (again.draws[i].value != t.draws[i].value) __builtin_trap();

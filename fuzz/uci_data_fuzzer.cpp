@@ -15,6 +15,7 @@
 #include <string>
 #include <string_view>
 
+#include "pathref/io/wall_following.hpp"
 #include "pathref/core/error.hpp"
 #include "pathref/ml/data.hpp"
 
@@ -23,7 +24,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::string_view text(reinterpret_cast<const char*>(data), size);
   std::optional<Dataset> d;
   try {
-    d = parse_wall_following(text, "fuzz.data");
+    d = pathref::io::parse_wall_following(text, "fuzz.data");
   } catch (const pathref::ParseError&) {
     return 0;
   }
@@ -39,12 +40,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     }
     out += std::string(wall_following_labels[static_cast<std::size_t>(d->y[i])]) + "\n";
   }
-  const Dataset r = parse_wall_following(out, "printed.data");
+  const Dataset r = pathref::io::parse_wall_following(out, "printed.data");
   if (r.x != d->x || r.y != d->y || r.features != d->features) __builtin_trap();
-  DataLimits small;
+  pathref::io::DataLimits small;
   small.max_rows = 4;
   try {
-    const Dataset s = parse_wall_following(text, "fuzz.data", small);
+    const Dataset s = pathref::io::parse_wall_following(text, "fuzz.data", small);
     if (d->rows() > 4 || s.x != d->x || s.y != d->y) __builtin_trap();
   } catch (const pathref::ParseError&) {
     if (d->rows() <= 4) __builtin_trap();

@@ -29,6 +29,7 @@
 #include <ompl/util/Console.h>
 #include <ompl/util/RandomNumbers.h>
 
+#include "pathref/io/scene_json.hpp"
 #include "pathref/continuous/srrt.hpp"
 #include "pathref/geometry/obstacles.hpp"
 #include "pathref/geometry/scene.hpp"
@@ -113,7 +114,7 @@ int main(int argc, char** argv) {
   fmt::print("OMPL {}.{}.{} RRT (goal bias {}, range {}, time limit {} s) vs pathref, {} runs per series, seeds {}..{}\n\n",
              OMPL_MAJOR_VERSION, OMPL_MINOR_VERSION, OMPL_PATCH_VERSION, pg, delta, time_limit_s, n, first, first + static_cast<std::uint32_t>(n) - 1);
   for (const auto& sc : pathref::reproduce::cin2021_srrt_scenes()) {
-    const auto scene = pathref::geometry::parse_scene_json(sc.scene_json, sc.id);
+    const auto scene = pathref::io::parse_scene_json(sc.scene_json, sc.id);
     const auto map = pathref::geometry::ObstacleMap::from_scene(scene);
     std::map<std::string, Acc> acc;
     std::vector<std::string> order;

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "commands.hpp"
+#include "pathref/io/scene_json.hpp"
 #include "pathref/core/error.hpp"
 #include "pathref/geometry/inflation.hpp"
 #include "pathref/geometry/scene.hpp"
@@ -31,7 +32,7 @@ void add_inflate_command(CLI::App& app, Action& run) {
   cmd->callback([&run] {
     run = [] {
       const std::uint64_t limit = max_memory_of(max_memory);
-      const geometry::Scene scene = geometry::read_scene_file(scene_path);
+      const geometry::Scene scene = io::read_scene_file(scene_path);
       // spec/inflation.md#cli: the raster (1 byte per cell) and its text (1 byte per cell) are
       // estimated before either is allocated.
       geometry::require_raster_memory(scene, scene_path, limit, 2);

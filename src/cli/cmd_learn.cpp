@@ -13,6 +13,8 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
+#include "pathref/io/model_file.hpp"
+#include "pathref/io/wall_following.hpp"
 #include "pathref/io/json_text.hpp"
 #include "pathref/io/map_file.hpp"
 #include "pathref/core/error.hpp"
@@ -125,7 +127,7 @@ int run_learn(const LearnOptions& o) {
   const std::uint32_t seed = parse_seed(o.seed);
   const Params params = parse_params(o.set, seed);
   const std::vector<Kind> kinds = parse_kinds(o.classifiers);
-  const Dataset d = read_wall_following(o.data);
+  const Dataset d = io::read_wall_following(o.data);
   Json protocol;
   std::vector<int> folds;  // cv: fold per row; holdout: 1 = test, 0 = train
   if (!o.cv.empty()) {
@@ -196,7 +198,7 @@ int run_learn(const LearnOptions& o) {
         if (folds[i] != test_id) train_rows.push_back(i);
       const Model m = train(kind, subset(d, train_rows), params);
       if (const auto* t = std::get_if<Tree>(&m.model)) tied_nodes += t->tied_splits;
-      if (!o.save_model.empty() && f == 0 && o.cv.empty()) write_output_file(o.save_model, stamped(to_json(m)).dump() + "\n");
+      if (!o.save_model.empty() && f == 0 && o.cv.empty()) write_output_file(o.save_model, stamped(io::to_json(m)).dump() + "\n");
       for (std::size_t i = 0; i < d.rows(); ++i)
         if (folds[i] == test_id) {
           pred[i] = predict(m, d.row(i));
@@ -220,7 +222,7 @@ int run_learn(const LearnOptions& o) {
   }
   if (!o.save_model.empty() && !o.cv.empty()) {
     // with --cv the saved model is trained on every row (the last classifier given)
-    write_output_file(o.save_model, stamped(to_json(train(kinds.back(), d, params))).dump() + "\n");
+    write_output_file(o.save_model, stamped(io::to_json(train(kinds.back(), d, params))).dump() + "\n");
   }
   stamp_version(doc);
   stamp_version(preds);
@@ -250,7 +252,7 @@ int run_learn(const LearnOptions& o) {
 }
 
 int run_classify(const ClassifyOptions& o) {
-  const Model m = read_model_file(o.model);
+  const Model m = io::read_model_file(o.model);
   const std::vector<double> x = parse_sensor_values(o.values);
   if (x.size() != m.features)
     throw UsageError(fmt::format("the model expects {} sensor distances, got {}", m.features, x.size()));

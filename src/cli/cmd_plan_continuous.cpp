@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "pathref/io/scene_json.hpp"
 #include "pathref/core/version.hpp"
 #include "pathref/continuous/srrt.hpp"
 #include "pathref/core/error.hpp"
@@ -71,7 +72,7 @@ ContinuousMap load_continuous_map(const ContinuousPlanArgs& o) {
   if (!o.map_file.empty() && format == io::MapFormat::automatic)
     format = io::detect_map_format(o.map_file, "");
   if (!o.map_file.empty() && format == io::MapFormat::scene) {
-    const geometry::Scene sc = geometry::read_scene_file(o.map_file);
+    const geometry::Scene sc = io::read_scene_file(o.map_file);
     try {
       cm.obstacles = geometry::ObstacleMap::from_scene(sc);
     } catch (const DomainError& e) {

@@ -8,6 +8,7 @@
 #include "commands.hpp"
 #include "pathref/core/error.hpp"
 #include "pathref/io/map_file.hpp"
+#include "pathref/io/trace_file.hpp"
 #include "pathref/rng/trace.hpp"
 
 namespace pathref::cli {
@@ -16,7 +17,7 @@ void write_trace_file(const std::string& path, const rng::Trace& trace, std::uin
                       const nlohmann::json& params) {
   nlohmann::json header{{"algo", algo}, {"params", params}, {"source", "pathref plan --trace"}};
   stamp_version(header);
-  write_output_file(path, rng::trace_text(trace, seed, header));
+  write_output_file(path, io::trace_text(trace, seed, header));
 }
 
 namespace {
@@ -30,9 +31,9 @@ std::string draw_text(const std::vector<rng::Draw>& d, std::size_t k) {
 }
 
 int run_trace_diff(const std::string& a_file, const std::string& b_file, std::size_t before) {
-  const rng::TraceFile a = rng::parse_trace(io::read_text_file(a_file, "trace file"), a_file);
-  const rng::TraceFile b = rng::parse_trace(io::read_text_file(b_file, "trace file"), b_file);
-  const auto seed = [](const rng::TraceFile& t) { return t.header.contains("seed") ? t.header.at("seed").dump() : "?"; };
+  const io::TraceFile a = io::parse_trace(io::read_text_file(a_file, "trace file"), a_file);
+  const io::TraceFile b = io::parse_trace(io::read_text_file(b_file, "trace file"), b_file);
+  const auto seed = [](const io::TraceFile& t) { return t.header.contains("seed") ? t.header.at("seed").dump() : "?"; };
   fmt::print("A: {} ({} draws, seed {})\n", a_file, a.draws.size(), seed(a));
   fmt::print("B: {} ({} draws, seed {})\n", b_file, b.draws.size(), seed(b));
   const auto k = rng::first_divergence(a.draws, b.draws);

@@ -2,6 +2,7 @@
 // in libpathref's src/pathref/rules/, because they call the CGAL-backed functions; they reach the
 // registry through rules::add_extension_module (see install_inflation_rules).
 // No CGAL header here: only the CGAL-free pathref/geometry/inflation.hpp.
+#include "pathref/io/scene_json.hpp"
 #include "pathref/core/error.hpp"
 #include "pathref/geometry/inflation.hpp"
 #include "pathref/grid/json_codec.hpp"
@@ -47,7 +48,7 @@ void register_inflation_rules(rules::Registry& r) {
       {{"rows", "grid", "the inflated W x H map, rows top first, '#' blocked"},
        {"blocked", "integer", "number of blocked cells"}},
       [](const Json& in) {
-        const Scene s = scene_from_json(in, "<input>", SceneKeys::geometry);
+        const Scene s = io::scene_from_json(in, "<input>", io::SceneKeys::geometry);
         const grid::Grid g = inflate_polygons(s);
         return Json{{"rows", rows_of(g)}, {"blocked", g.blocked_count()}};
       }});
@@ -108,7 +109,7 @@ void register_inflation_rules(rules::Registry& r) {
        {"start", "cell", "start cell"},
        {"goal", "cell", "goal cell"}},
       [](const Json& in) {
-        Scene s = scene_from_json(in, "<input>", SceneKeys::geometry);
+        Scene s = io::scene_from_json(in, "<input>", io::SceneKeys::geometry);
         const InflatedScene r2 = inflate_scene(s);
         return Json{{"rows", rows_of(r2.grid)}, {"start", grid::cell_to_json(r2.start)},
                     {"goal", grid::cell_to_json(r2.goal)}};

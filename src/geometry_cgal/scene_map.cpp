@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <string>
 
+#include "pathref/io/scene_json.hpp"
 #include "pathref/core/error.hpp"
 #include "pathref/core/memory.hpp"
 #include "geometry_cgal/scene_map.hpp"
@@ -35,7 +36,7 @@ void require_raster_memory(const Scene& scene, const std::string& filename, std:
 
 io::MapFile scene_map(std::string_view text, const std::string& filename, const io::ReadLimits& limits) {
   io::check_limits(limits);
-  const Scene scene = parse_scene_json(text, filename);
+  const Scene scene = io::parse_scene_json(text, filename);
   const std::int64_t w = scene.width;
   const std::int64_t h = scene.height;
   if (w > limits.max_side || h > limits.max_side)

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "pathref/io/scene_json.hpp"
 #include "pathref/continuous/srrt.hpp"
 #include "pathref/core/error.hpp"
 #include "pathref/geometry/obstacles.hpp"
@@ -228,7 +229,7 @@ SrrtReproduction reproduce_cin2021_srrt(const SrrtReproduceOptions& o) {
   std::int64_t checked_paths = 0;
   Json protocol_series = Json::object();
   for (const SrrtScene& sc : cin2021_srrt_scenes()) {
-    const geometry::Scene scene = geometry::parse_scene_json(sc.scene_json, "scene-" + sc.id + ".json");
+    const geometry::Scene scene = io::parse_scene_json(sc.scene_json, "scene-" + sc.id + ".json");
     const geometry::ObstacleMap map = geometry::ObstacleMap::from_scene(scene);
     out.files.emplace_back("scene-" + sc.id + ".json", sc.scene_json);
     Json per_series = Json::object();
@@ -347,7 +348,7 @@ std::vector<std::pair<std::string, std::string>> cin2021_srrt_figures(const Json
     for (const Json& s : doc.at("scenes"))
       if (s.at("id").get<std::string>() == sc.id) scene_doc = &s;
     if (scene_doc == nullptr) continue;
-    const geometry::Scene scene = geometry::parse_scene_json(sc.scene_json, "scene-" + sc.id + ".json");
+    const geometry::Scene scene = io::parse_scene_json(sc.scene_json, "scene-" + sc.id + ".json");
     const geometry::ObstacleMap map = geometry::ObstacleMap::from_scene(scene);
     const io::ContinuousScene cs{map.polygons(), map.radius(), map.lower(), map.upper()};
     for (const SeriesSpec& p : series_specs()) {

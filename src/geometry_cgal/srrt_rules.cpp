@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "pathref/io/scene_json.hpp"
 #include "pathref/continuous/kdtree.hpp"
 #include "pathref/continuous/rrt.hpp"
 #include "pathref/continuous/srrt.hpp"
@@ -54,7 +55,7 @@ ObstacleMap obstacles_of(const Json& in) {
   Json geo = Json::object();
   for (const char* k : {"origin", "width", "height", "cell_size", "radius", "margin", "polygons"})
     if (in.contains(k)) geo[k] = in.at(k);
-  return ObstacleMap::from_scene(scene_from_json(geo, "<input>", SceneKeys::geometry));
+  return ObstacleMap::from_scene(io::scene_from_json(geo, "<input>", io::SceneKeys::geometry));
 }
 
 const std::vector<rules::Field> scene_fields = {

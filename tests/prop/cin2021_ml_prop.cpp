@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "pathref/io/wall_following.hpp"
 #include "pathref/core/error.hpp"
 #include "pathref/ml/classifier.hpp"
 #include "pathref/ml/folds.hpp"
@@ -126,7 +127,7 @@ TEST_CASE("prop_cin2021_data_text_round_trip", "[cin2021-ml][prop]") {
       }
       text += std::string(wall_following_labels[static_cast<std::size_t>(d.y[i])]) + (crlf ? "\r\n" : "\n");
     }
-    const Dataset r = parse_wall_following(text, "rt");
+    const Dataset r = pathref::io::parse_wall_following(text, "rt");
     RC_ASSERT(r.x == d.x);
     RC_ASSERT(r.y == d.y);
     RC_ASSERT(r.features == d.features);

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "pathref/io/scene_json.hpp"
 #include "pathref/continuous/rrt.hpp"
 #include "pathref/continuous/srrt.hpp"
 #include "pathref/equations/bspline.hpp"
@@ -51,7 +52,7 @@ geo::Scene gen_rect_scene(int max_rects, const char* r) {
              "], [" + q(x1) + ", " + q(y1) + "], [" + q(x0) + ", " + q(y1) + "]]}";
   }
   polys += "]";
-  return geo::parse_scene_json(std::string("{\"format\": \"pathref-scene 1\", \"origin\": [0, 0], \"width\": 12, "
+  return pathref::io::parse_scene_json(std::string("{\"format\": \"pathref-scene 1\", \"origin\": [0, 0], \"width\": 12, "
                                            "\"height\": 12, \"cell_size\": 1, \"radius\": ") +
                                    r + ", \"margin\": 0, \"polygons\": " + polys + ", \"start\": [0, 0], \"goal\": [1, 0]}",
                                "p.json");

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "pathref/io/scene_json.hpp"
 #include "pathref/continuous/kdtree.hpp"
 #include "pathref/continuous/rrt.hpp"
 #include "pathref/continuous/srrt.hpp"
@@ -60,7 +61,7 @@ geometry::Scene to_scene(const RectScene& rs) {
                                        "\"height\": 12, \"cell_size\": 1, \"radius\": ") +
                            r_text(rs.r_choice) + ", \"margin\": 0, \"polygons\": " + polys +
                            ", \"start\": [0, 0], \"goal\": [1, 0]}";
-  return geometry::parse_scene_json(text, "p.json");
+  return io::parse_scene_json(text, "p.json");
 }
 
 /// Independent oracle in binary64: distance from segment [a, b] to the closed axis-aligned

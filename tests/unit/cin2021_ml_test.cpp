@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "pathref/io/model_file.hpp"
+#include "pathref/io/wall_following.hpp"
 #include "pathref/core/error.hpp"
 #include "pathref/ml/classifier.hpp"
 #include "pathref/ml/folds.hpp"
@@ -29,7 +31,7 @@ Dataset make(std::size_t features, std::vector<double> x, std::vector<int> y, st
 }  // namespace
 
 TEST_CASE("cin2021.data: parses rows, CRLF and a last line without a line end", "[cin2021-ml]") {
-  const Dataset d = parse_wall_following("1.5,2,Move-Forward\r\n0.25,3e0,Slight-Left-Turn\n4,5,Sharp-Right-Turn", "t");
+  const Dataset d = pathref::io::parse_wall_following("1.5,2,Move-Forward\r\n0.25,3e0,Slight-Left-Turn\n4,5,Sharp-Right-Turn", "t");
   REQUIRE(d.rows() == 3);
   CHECK(d.features == 2);
   CHECK(d.y == std::vector<int>{0, 3, 2});
@@ -39,7 +41,7 @@ TEST_CASE("cin2021.data: parses rows, CRLF and a last line without a line end", 
 TEST_CASE("cin2021.data: bad rows are ParseErrors naming line and column", "[cin2021-ml]") {
   const auto where = [](const char* text) -> std::string {
     try {
-      (void)parse_wall_following(text, "f.data");
+      (void)pathref::io::parse_wall_following(text, "f.data");
     } catch (const ParseError& e) {
       return std::to_string(e.line()) + ":" + std::to_string(e.column());
     }
@@ -62,9 +64,9 @@ TEST_CASE("cin2021.data: the shared 2-, 4- and 24-sensor files", "[cin2021-ml][s
     pathref::testing::skip_test(dir + " is absent (shared data)");
     return;
   }
-  const Dataset d2 = read_wall_following(dir + "sensor_readings_2.data");
-  const Dataset d4 = read_wall_following(dir + "sensor_readings_4.data");
-  const Dataset d24 = read_wall_following(dir + "sensor_readings_24.data");
+  const Dataset d2 = pathref::io::read_wall_following(dir + "sensor_readings_2.data");
+  const Dataset d4 = pathref::io::read_wall_following(dir + "sensor_readings_4.data");
+  const Dataset d24 = pathref::io::read_wall_following(dir + "sensor_readings_24.data");
   CHECK(d2.features == 2);
   CHECK(d4.features == 4);
   CHECK(d24.features == 24);
@@ -280,13 +282,13 @@ TEST_CASE("cin2021 model file: every classifier round-trips through JSON", "[cin
   for (const Kind k : {Kind::mnb, Kind::gnb, Kind::svm, Kind::knn, Kind::rf, Kind::tree}) {
     INFO(to_string(k));
     const Model m = train(k, d, p);
-    const Model r = model_from_json(nlohmann::json::parse(to_json(m).dump()), "m.json");
+    const Model r = pathref::io::model_from_json(nlohmann::json::parse(pathref::io::to_json(m).dump()), "m.json");
     for (std::size_t i = 0; i < d.rows(); ++i) CHECK(predict(r, d.row(i)) == predict(m, d.row(i)));
   }
-  nlohmann::json bad = to_json(train(Kind::gnb, d, p));
+  nlohmann::json bad = pathref::io::to_json(train(Kind::gnb, d, p));
   bad["version"] = 2;
-  CHECK_THROWS_AS(model_from_json(bad, "m.json"), ParseError);
+  CHECK_THROWS_AS(pathref::io::model_from_json(bad, "m.json"), ParseError);
   bad["version"] = 1;
   bad["model"]["var"][0] = -1.0;
-  CHECK_THROWS_AS(model_from_json(bad, "m.json"), ParseError);
+  CHECK_THROWS_AS(pathref::io::model_from_json(bad, "m.json"), ParseError);
 }

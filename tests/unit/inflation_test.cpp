@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "pathref/io/scene_json.hpp"
 #include "pathref/core/error.hpp"
 #include "pathref/geometry/decimal.hpp"
 #include "pathref/geometry/inflation.hpp"
@@ -29,12 +30,12 @@ Scene scene_of(const std::string& polygons_json, const char* rad = "0", const ch
                            ", \"width\": " + std::to_string(w) + ", \"height\": " + std::to_string(h) +
                            ", \"cell_size\": " + s + ", \"radius\": " + rad + ", \"margin\": " + mar +
                            ", \"polygons\": " + polygons_json + ", \"start\": [0, 0], \"goal\": [1, 0]}";
-  return parse_scene_json(text, "t.json");
+  return pathref::io::parse_scene_json(text, "t.json");
 }
 
 std::string parse_error(const std::string& text) {
   try {
-    (void)parse_scene_json(text, "s.json");
+    (void)pathref::io::parse_scene_json(text, "s.json");
   } catch (const ParseError& e) {
     return e.what();
   }
@@ -110,7 +111,7 @@ TEST_CASE("inflation.cell-blocked: the interior counts, not only the edges", "[i
 }
 
 TEST_CASE("inflation.cell-blocked: fast grid equals the definition on a non-convex sample scene", "[inflation]") {
-  const Scene s = read_scene_file(pathref::testing::source_dir() + "/tests/data/scenes/ushape.json");
+  const Scene s = pathref::io::read_scene_file(pathref::testing::source_dir() + "/tests/data/scenes/ushape.json");
   const grid::Grid g = inflate_polygons(s);
   for (std::int64_t y = 0; y < s.height; ++y)
     for (std::int64_t x = 0; x < s.width; ++x) CHECK(g.blocked({x, y}) == cell_blocked(s, {x, y}));
@@ -204,8 +205,8 @@ TEST_CASE("formats.scene: reader errors carry the line, column and JSON pointer 
 }
 
 TEST_CASE("formats.scene: to_scene_json round trip keeps every number exact", "[inflation][formats]") {
-  const Scene s = read_scene_file(pathref::testing::source_dir() + "/tests/data/scenes/ushape.json");
-  CHECK(parse_scene_json(to_scene_json(s), "again.json") == s);
+  const Scene s = pathref::io::read_scene_file(pathref::testing::source_dir() + "/tests/data/scenes/ushape.json");
+  CHECK(pathref::io::parse_scene_json(pathref::io::to_scene_json(s), "again.json") == s);
   CHECK(to_string(s.polygons[0].vertices[0].x) == "2.3");
 }
 

@@ -11,6 +11,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "pathref/io/model_file.hpp"
+#include "pathref/io/wall_following.hpp"
 #include "pathref/core/error.hpp"
 #include "pathref/io/grid_text.hpp"
 #include "pathref/io/map_file.hpp"
@@ -19,6 +21,7 @@
 #include "pathref/io/ros_map.hpp"
 #include "pathref/ml/classifier.hpp"
 #include "pathref/planners/planner.hpp"
+#include "pathref/io/trace_file.hpp"
 #include "pathref/rng/trace.hpp"
 #include "pathref/sim/fused.hpp"
 #include "pathref/sim/simulate.hpp"
@@ -62,7 +65,7 @@ std::string model_text(ml::Kind kind) {
   ml::Params p;
   p.k = 3;
   p.forest.trees = 2;
-  return ml::to_json(ml::train(kind, small_data(), p)).dump();
+  return io::to_json(ml::train(kind, small_data(), p)).dump();
 }
 
 /// Every JSON pointer of `j` (objects, arrays and leaves), root excluded.
@@ -89,7 +92,7 @@ TEST_CASE("formats.model: a model file's refusals are located and never library 
     Json j = Json::parse(gnb);
     j["version"] = 2;
     const std::string text = j.dump(1);
-    const std::string m = message_of([&] { (void)ml::parse_model(text, "m.json"); });
+    const std::string m = message_of([&] { (void)io::parse_model(text, "m.json"); });
     CHECK(m.find("m.json:") == 0);
     CHECK(m.find(": /version: expected 1 (this reader reads model file version 1), got 2") != std::string::npos);
     CHECK(m.find("m.json:1:1:") == std::string::npos);  // not at 1:1 as before issue 27
@@ -98,34 +101,34 @@ TEST_CASE("formats.model: a model file's refusals are located and never library 
   {
     Json j = Json::parse(gnb);
     j["model"]["mean"] = "abc";
-    CHECK(message_of([&] { (void)ml::parse_model(j.dump(), "m.json"); })
+    CHECK(message_of([&] { (void)io::parse_model(j.dump(), "m.json"); })
               .find(": /model/mean: expected an array, got a string") != std::string::npos);
     Json t = Json::parse(model_text(ml::Kind::tree));
     t["model"].erase("feature");
-    CHECK(message_of([&] { (void)ml::parse_model(t.dump(), "t.json"); })
+    CHECK(message_of([&] { (void)io::parse_model(t.dump(), "t.json"); })
               .find(": /model: missing key \"feature\" (expected one feature index per node, -1 at a leaf)") !=
           std::string::npos);
     Json r = Json::parse(model_text(ml::Kind::rf));
     r["model"]["trees"][1]["left"] = Json::array({1});
-    CHECK(message_of([&] { (void)ml::parse_model(r.dump(), "r.json"); })
+    CHECK(message_of([&] { (void)io::parse_model(r.dump(), "r.json"); })
               .find(": /model/trees/1/left: expected ") != std::string::npos);
   }
   // a shape that contradicts features and classes, and a value out of its range
   {
     Json j = Json::parse(model_text(ml::Kind::knn));
     j["model"]["y"][0] = 7;
-    CHECK(message_of([&] { (void)ml::model_from_json(j, "k.json"); }) ==
+    CHECK(message_of([&] { (void)io::model_from_json(j, "k.json"); }) ==
           "k.json: /model/y/0: expected an integer in [0, 3], got 7");
     j = Json::parse(model_text(ml::Kind::knn));
     j["model"]["x"].push_back(1.0);
-    CHECK(message_of([&] { (void)ml::model_from_json(j, "k.json"); }) ==
+    CHECK(message_of([&] { (void)io::model_from_json(j, "k.json"); }) ==
           "k.json: /model/x: expected 16 values (rows of /model/y * features), got 17");
   }
   // Every value of every kind's file replaced by a string, or removed: accepted or a located
   // ParseError, never another exception (nlohmann's type_error / out_of_range escaped before).
   for (const ml::Kind kind : {ml::Kind::mnb, ml::Kind::gnb, ml::Kind::svm, ml::Kind::knn, ml::Kind::rf, ml::Kind::tree}) {
     const Json base = Json::parse(model_text(kind));
-    REQUIRE_NOTHROW(ml::parse_model(base.dump(), "m.json"));
+    REQUIRE_NOTHROW(io::parse_model(base.dump(), "m.json"));
     std::vector<std::string> ptrs;
     pointers(base, "", ptrs);
     for (const std::string& p : ptrs) {
@@ -141,7 +144,7 @@ TEST_CASE("formats.model: a model file's refusals are located and never library 
         }
         INFO(ml::to_string(kind) << " " << p << (mode == 0 ? " := string" : " removed"));
         try {
-          (void)ml::parse_model(j.dump(), "m.json");
+          (void)io::parse_model(j.dump(), "m.json");
         } catch (const ParseError& e) {
           const std::string m = e.what();
           CHECK(m.rfind("m.json:1:", 0) == 0);
@@ -285,17 +288,17 @@ TEST_CASE("formats: readers quote input through io::printable (no raw NUL or BOM
   CHECK(g1.find("unknown keyword 'si\\x00ze'") != std::string::npos);
   clean(message_of([&] { (void)io::parse_grid_text("pathref-grid " + bom + "1\n", "g.txt"); }));
   clean(message_of([&] { (void)io::parse_grid_text("pathref-grid 1\nsize 3" + nul + " 3\n", "g.txt"); }));
-  const std::string d = message_of([&] { (void)ml::parse_wall_following("1,2,Move-Forward\n1," + bom + "2,Move-Forward\n", "d.data"); });
+  const std::string d = message_of([&] { (void)io::parse_wall_following("1,2,Move-Forward\n1," + bom + "2,Move-Forward\n", "d.data"); });
   clean(d);
   CHECK(d.find("'\\xEF\\xBB\\xBF2'") != std::string::npos);
-  clean(message_of([&] { (void)ml::parse_wall_following("1,2,Move" + nul + "Forward\n", "d.data"); }));
+  clean(message_of([&] { (void)io::parse_wall_following("1,2,Move" + nul + "Forward\n", "d.data"); }));
   clean(message_of([&] { (void)io::parse_ros_yaml("image: m.pgm\nresolution: 0.05\norigin: [0, 0, 0]\nnegate: 0\n"
                                                   "occupied_thresh: 0.65\nfree_thresh: 0.196\nk" + bom + "ey: 1\n",
                                                   "m.yaml"); }));
   clean(message_of([&] { (void)io::parse_ros_yaml("image: m.pgm\nresolution: 0." + bom + "05\n", "m.yaml"); }));
   clean(message_of([&] { (void)io::parse_path_text("1 2\n3 " + bom + "4\n", "p.txt", io::PathFormat::automatic, false); }));
   clean(message_of([&] { (void)io::parse_path_text("1 2\n3 4" + nul + "\n", "p.txt", io::PathFormat::automatic, false); }));
-  clean(message_of([&] { (void)rng::parse_trace("{\"i\": 0, \"u\": 2, \"" + bom + "\": 1}\n", "t.jsonl"); }));
-  const std::string t = message_of([&] { (void)rng::parse_trace("{\"i\": 1, \"u\": 0.5}\n", "t.jsonl"); });
+  clean(message_of([&] { (void)io::parse_trace("{\"i\": 0, \"u\": 2, \"" + bom + "\": 1}\n", "t.jsonl"); }));
+  const std::string t = message_of([&] { (void)io::parse_trace("{\"i\": 1, \"u\": 0.5}\n", "t.jsonl"); });
   CHECK(t == "t.jsonl:1:7: /i: expected draw index 0 (draws are numbered 0, 1, 2, ... in order), got 1");
 }

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <vector>
 
+#include "pathref/io/scene_json.hpp"
 #include "pathref/continuous/rrt.hpp"
 #include "pathref/continuous/srrt.hpp"
 #include "pathref/core/error.hpp"
@@ -33,7 +34,7 @@ geometry::ObstacleMap empty_world() {
   const std::string text =
       "{\"format\": \"pathref-scene 1\", \"origin\": [0, 0], \"width\": 10, \"height\": 10, "
       "\"cell_size\": 1, \"radius\": 0, \"margin\": 0, \"polygons\": [], \"start\": [0, 0], \"goal\": [1, 0]}";
-  return geometry::ObstacleMap::from_scene(geometry::parse_scene_json(text, "t.json"));
+  return geometry::ObstacleMap::from_scene(io::parse_scene_json(text, "t.json"));
 }
 
 ml::Dataset ml_data(std::size_t features, std::vector<double> x, std::vector<int> y, std::size_t classes) {
@@ -282,7 +283,7 @@ TEST_CASE("cin2021.srrt.curve: the repair's nearest-node tie goes to the first r
       "\"cell_size\": 1, \"radius\": 0, \"margin\": 0, "
       "\"polygons\": [{\"vertices\": [[4.5, -0.5], [5.5, -0.5], [5.5, 0.5], [4.5, 0.5]]}], "
       "\"start\": [0, 0], \"goal\": [1, 0]}";
-  const auto m = geometry::ObstacleMap::from_scene(geometry::parse_scene_json(text, "t.json"));
+  const auto m = geometry::ObstacleMap::from_scene(io::parse_scene_json(text, "t.json"));
   continuous::CurveParams p;
   p.degree = 1;
   const continuous::CurveParams no_repair = p;  // degree 1, repair off

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "pathref/io/scene_json.hpp"
 #include "pathref/continuous/srrt.hpp"
 #include "pathref/core/error.hpp"
 #include "pathref/equations/bspline.hpp"
@@ -47,7 +48,7 @@ geo::Scene scene_of(const std::string& polygons_json, const char* rad = "0", int
                            std::to_string(w) + ", \"height\": " + std::to_string(h) +
                            ", \"cell_size\": 1, \"radius\": " + rad + ", \"margin\": 0, \"polygons\": " +
                            polygons_json + ", \"start\": [0, 0], \"goal\": [1, 0]}";
-  return geo::parse_scene_json(text, "t.json");
+  return pathref::io::parse_scene_json(text, "t.json");
 }
 
 const char* square13 = "[{\"vertices\": [[1, 1], [3, 1], [3, 3], [1, 3]]}]";

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "pathref/io/scene_json.hpp"
 #include "pathref/continuous/kdtree.hpp"
 #include "pathref/continuous/rrt.hpp"
 #include "pathref/continuous/srrt.hpp"
@@ -31,7 +32,7 @@ geometry::Scene scene_of(const std::string& polygons_json, const char* rad = "0"
                            std::to_string(w) + ", \"height\": " + std::to_string(h) +
                            ", \"cell_size\": 1, \"radius\": " + rad + ", \"margin\": " + mar +
                            ", \"polygons\": " + polygons_json + ", \"start\": [0, 0], \"goal\": [1, 0]}";
-  return geometry::parse_scene_json(text, "t.json");
+  return io::parse_scene_json(text, "t.json");
 }
 
 const char* unit_square = "[{\"vertices\": [[1, 1], [2, 1], [2, 2], [1, 2]]}]";

@@ -12,6 +12,7 @@
 #include "pathref/core/error.hpp"
 #include "pathref/planners/planner.hpp"
 #include "pathref/rng/mt19937.hpp"
+#include "pathref/io/trace_file.hpp"
 #include "pathref/rng/trace.hpp"
 #include "support/generators.hpp"
 
@@ -58,8 +59,8 @@ TEST_CASE("trace: text round trip is exact, header kept", "[rng][trace]") {
     if (i % 50 == 0) s.set_context("block \"" + std::to_string(i / 50) + "\"");  // quotes are escaped
     (void)s.next_double(i % 2 == 0 ? "even" : "odd");
   }
-  const std::string text = rng::trace_text(t, 2024, nlohmann::json{{"algo", "test"}});
-  const rng::TraceFile back = rng::parse_trace(text, "t.jsonl");
+  const std::string text = io::trace_text(t, 2024, nlohmann::json{{"algo", "test"}});
+  const io::TraceFile back = io::parse_trace(text, "t.jsonl");
   CHECK(back.header.at("seed") == 2024);
   CHECK(back.header.at("algo") == "test");
   CHECK(back.header.at("draws") == 200);
@@ -89,7 +90,7 @@ TEST_CASE("trace: first_divergence", "[rng][trace]") {
 TEST_CASE("trace: malformed traces are ParseErrors at their line", "[rng][trace]") {
   const auto message = [](const std::string& text) {
     try {
-      (void)rng::parse_trace(text, "t.jsonl");
+      (void)io::parse_trace(text, "t.jsonl");
     } catch (const ParseError& e) {
       return std::string(e.what());
     }
@@ -104,9 +105,9 @@ TEST_CASE("trace: malformed traces are ParseErrors at their line", "[rng][trace]
   // A first line whose "format" is not a string is a draw, not a header (was: a library type_error
   // escaping as an internal error, exit 3; fuzz/corpus/trace_file/crash-format-not-string.jsonl).
   CHECK(message("{\"format\":1}\n").find("t.jsonl:1:1: /: expected a draw") != std::string::npos);
-  CHECK(rng::parse_trace("{\"format\":[1],\"i\":0,\"u\":0.5}\n", "t.jsonl").draws.size() == 1);
+  CHECK(io::parse_trace("{\"format\":[1],\"i\":0,\"u\":0.5}\n", "t.jsonl").draws.size() == 1);
   // A user's minimal trace: no header, no purpose, no context; blank lines ignored.
-  CHECK(rng::parse_trace("\n{\"i\":0,\"u\":0.5}\r\n{\"i\":1,\"u\":0}\n", "t.jsonl").draws.size() == 2);
+  CHECK(io::parse_trace("\n{\"i\":0,\"u\":0.5}\r\n{\"i\":1,\"u\":0}\n", "t.jsonl").draws.size() == 2);
 }
 
 TEST_CASE("prop_trace_changes_no_planner_result", "[rng][trace][prop]") {

@@ -4,7 +4,7 @@
 /// size s with its lower-left corner at an exact origin, obstacle polygons (simple, non-convex
 /// allowed) with exact decimal vertices, the robot radius and safety margin (Shi et al. 2022,
 /// Sec. 3: obstacles are expanded by radius + safety distance), and the start and goal cells.
-/// This header and its parser are CGAL-free; the geometry (inflation.hpp) lives in the separate
+/// This header is CGAL-free (its reader is io/scene_json.hpp); the geometry (inflation.hpp) lives in the separate
 /// library pathref_geometry.
 /// Spec: spec/formats.md#polygon-scene-json (grammar, limits, errors), spec/inflation.md
 #include <cstddef>
@@ -13,8 +13,6 @@
 #include <string>
 #include <string_view>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "pathref/geometry/decimal.hpp"
 #include "pathref/grid/grid.hpp"
@@ -57,32 +55,8 @@ inline constexpr std::size_t max_polygon_vertices = 100000;
 inline constexpr std::size_t max_scene_vertices = 1000000;
 inline constexpr std::uintmax_t max_scene_file_bytes = std::uintmax_t{64} << 20;
 
-/// What the reader demands of the object.
-enum class SceneKeys {
-  file,      ///< a scene file: "format" and "start"/"goal" required
-  geometry,  ///< a rule input: "format", "start", "goal" optional
-};
-
-/// Parses scene JSON text. Numbers are read exactly from their text (0.3 = 3/10).
-/// Throws ParseError(filename, line, column, what) for invalid JSON (line/column of the
-/// offending byte) and ParseError(filename, 0, 0, "<JSON pointer>: expected ...") for a value of
-/// the wrong type, a missing or unknown key, a number outside its range or the limits.
-/// Geometric preconditions (simple polygons, start/goal placement) are NOT checked here: they are
-/// DomainErrors of the inflation rules (spec/inflation.md).
-[[nodiscard]] Scene parse_scene_json(std::string_view text, std::string_view filename);
-
-/// Reads a scene from an already parsed JSON object (rule inputs, `pathref eval`): the same
-/// checks as parse_scene_json; a JSON number stored as a double is read as the decimal of its
-/// shortest round-trip text (exact for <= 15 significant digits, spec/formats.md).
-[[nodiscard]] Scene scene_from_json(const nlohmann::json& object, std::string_view filename,
-                                    SceneKeys keys);
-
-/// The scene as JSON text with numbers written exactly (decimal notation); reading it back with
-/// parse_scene_json gives an equal Scene.
-[[nodiscard]] std::string to_scene_json(const Scene& scene);
-
-/// Reads a whole file and parses it. UsageError when it cannot be opened, is not a regular file
-/// or is larger than max_scene_file_bytes (checked before reading).
-[[nodiscard]] Scene read_scene_file(const std::string& path);
+// Reading and writing scene files is io's (pathref/io/scene_json.hpp: io::parse_scene_json,
+// io::scene_from_json, io::to_scene_json, io::read_scene_file; docs/architecture.md#layers).
+// Before 0.3.0 they were declared here, in namespace geometry.
 
 }  // namespace pathref::geometry

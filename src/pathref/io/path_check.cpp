@@ -7,7 +7,6 @@
 #include "pathref/core/error.hpp"
 #include "pathref/geometry/clearance.hpp"
 #include "pathref/planners/search.hpp"
-#include "pathref/rules/registry.hpp"
 
 namespace pathref::io {
 
@@ -45,7 +44,7 @@ std::string explain(const metrics::PathCheck& v, const std::vector<grid::Cell>& 
 }
 
 nlohmann::json number_or_null(std::optional<double> v) {
-  return v && std::isfinite(*v) ? rules::number(*v) : nlohmann::json(nullptr);
+  return v && std::isfinite(*v) ? nlohmann::json(*v) : nlohmann::json(nullptr);
 }
 
 }  // namespace

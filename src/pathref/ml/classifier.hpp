@@ -67,18 +67,8 @@ struct Model {
 /// Classes of every row of `d`.
 [[nodiscard]] std::vector<int> predict_all(const Model& m, const Dataset& d);
 
-/// The model as JSON: {"format": "pathref-ml-model", "version": 1, "kind", "features",
-/// "classes", "labels", "params", "model": {...}} (spec/cin2021-ml.md#model-file).
-[[nodiscard]] nlohmann::json to_json(const Model& m);
-/// Reads a model back from a JSON value that came from no text (spec/cin2021-ml.md#model-file).
-/// Every wrong format, version, type, value or shape is a ParseError `SOURCE: /pointer: expected
-/// ...` (no line and column: there is no text); no library exception escapes.
-[[nodiscard]] Model model_from_json(const nlohmann::json& j, const std::string& source);
-/// Reads a model file's text: parse errors and every refusal of model_from_json as a ParseError
-/// `SOURCE:LINE:COLUMN: /pointer: expected ...` (io::parse_json_text's limits and messages).
-[[nodiscard]] Model parse_model(std::string_view text, const std::string& source);
-/// Reads the model file `path` (io::read_input_file, at most 32 MiB) with parse_model.
-[[nodiscard]] Model read_model_file(const std::string& path);
+// The model file (io::to_json, io::model_from_json, io::parse_model, io::read_model_file) is
+// io's: pathref/io/model_file.hpp (docs/architecture.md#layers).
 
 /// Predictions of cross-validation: for every fold f, train on the rows with fold != f and
 /// predict the rows with fold == f; returns one prediction per row. Spec: cin2021.folds.

@@ -22,9 +22,8 @@ struct ParamsSource {
   std::string pointer;
 };
 
-/// The ParamsSource of the value `pointer` names in the JSON text `text` of `file` (text empty:
-/// line and column 0).
-[[nodiscard]] ParamsSource params_source(std::string_view text, std::string_view file, const std::string& pointer);
+// A reader fills a ParamsSource from its text (io::line_column, io::pointer_offset): positions in a
+// text are io's (docs/architecture.md#layers).
 
 /// p.run(req). When req.params is not empty and `source` is given, a UsageError or DomainError the
 /// planner throws (planners check their parameter values when they run) is rethrown as the

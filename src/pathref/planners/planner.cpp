@@ -4,7 +4,6 @@
 #include <algorithm>
 
 #include "pathref/core/error.hpp"
-#include "pathref/io/json_text.hpp"
 #include "pathref/planners/registry_list.hpp"
 
 namespace pathref::planners {
@@ -44,16 +43,6 @@ std::optional<std::pair<std::string, std::string>> first_bad_param(const Planner
     }
   }
   return std::nullopt;
-}
-
-ParamsSource params_source(std::string_view text, std::string_view file, const std::string& pointer) {
-  ParamsSource out{std::string(file), 0, 0, pointer};
-  if (!text.empty()) {
-    const auto [line, column] = io::line_column(text, io::pointer_offset(text, pointer));
-    out.line = line;
-    out.column = column;
-  }
-  return out;
 }
 
 Result run_with_params_from(const Planner& p, const Request& req, const std::optional<ParamsSource>& source) {

@@ -1,3 +1,4 @@
+#include "pathref/io/wall_following.hpp"
 #include "pathref/reproduce/cin2021_ml.hpp"
 
 #include <fmt/core.h>
@@ -129,7 +130,7 @@ Claim tenfold_printed_claim(const std::string& id, const std::string& text, doub
 Json run_cin2021_ml(const Cin2021MlConfig& cfg) {
   const auto t_all = std::chrono::steady_clock::now();
   require(cfg.seeds >= 2, "cin2021-ml: seeds must be >= 2 (an interval over seeds needs 2)");
-  const Dataset d = read_wall_following(cfg.data_file);
+  const Dataset d = io::read_wall_following(cfg.data_file);
   require(d.features == 4, "cin2021-ml: the paper's protocol uses the 4-sensor file (sensor_readings_4.data)");
   const auto say = [&](const std::string& s) { if (cfg.progress) cfg.progress(s); };
   const int n = cfg.seeds;

@@ -13,8 +13,6 @@
 #include <string_view>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
 namespace pathref::rng {
 
 /// One draw of a traced stream.
@@ -40,18 +38,9 @@ class Trace {
   std::uint64_t dropped_ = 0;
 };
 
-/// The JSON-lines text of a trace: a header line {"format": "pathref-trace", "format_version": 1,
-/// "seed", plus `header`'s members} then one line per draw {"i", "u", "purpose", "context"}
-/// ("u" printed with 17 significant digits, so it reads back to the same double).
-[[nodiscard]] std::string trace_text(const Trace& trace, std::uint32_t seed, const nlohmann::json& header);
-
-/// A trace read back: its header and draws. ParseError FILE:LINE:COLUMN on a malformed line
-/// (not JSON, a draw without "i" or "u", indices not 0, 1, 2, ..., u outside [0, 1)).
-struct TraceFile {
-  nlohmann::json header;
-  std::vector<Draw> draws;
-};
-[[nodiscard]] TraceFile parse_trace(std::string_view text, std::string_view file);
+// Writing and reading trace files (JSON lines) is io's: pathref/io/trace_file.hpp (io::trace_text,
+// io::parse_trace; docs/architecture.md#layers). Before 0.3.0 they were rng::trace_text and
+// rng::parse_trace.
 
 /// Where two traces part: the first index at which the values differ or one trace ends
 /// (nullopt when they are equal draw for draw). Purposes and contexts are not compared (a

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "pathref/io/wall_following.hpp"
 #include "pathref/core/error.hpp"
 #include "pathref/ml/classifier.hpp"
 #include "pathref/ml/folds.hpp"
@@ -129,12 +130,12 @@ const std::vector<Field> averaged_outputs = {
 
 void register_cin2021_ml_rules(Registry& r) {
   r.add(Rule{"cin2021.data", "UCI wall-following rows 'v1,...,vd,LABEL' -> features and labels (0..3)",
-             "pathref::ml::parse_wall_following",
+             "pathref::io::parse_wall_following",
              {{"text", "string", "the file's text"}},
              {{"rows", "integer", ""}, {"features", "integer", "d"}, {"x", "number[][]", "rows x d"},
               {"y", "integer[]", "Move-Forward 0, Slight-Right-Turn 1, Sharp-Right-Turn 2, Slight-Left-Turn 3"}},
              [](const Json& in) {
-               const Dataset d = parse_wall_following(arg_string(in, "text"), "input");
+               const Dataset d = io::parse_wall_following(arg_string(in, "text"), "input");
                return Json{{"rows", d.rows()}, {"features", d.features}, {"x", rows_json(d.x, d.features)}, {"y", d.y}};
              }});
   r.add(Rule{"cin2021.eq1", "Naive Bayes (Eq. 1): Gaussian or multinomial joint log-likelihood and class",

@@ -8,6 +8,7 @@
 #include <limits>
 #include <map>
 #include <string>
+#include <tuple>
 #include <utility>
 
 #include "pathref/core/error.hpp"
@@ -301,7 +302,12 @@ FusedScenario parse_fused_scenario(std::string_view text, std::string_view file,
   const Json doc = io::parse_json_text(text, file);
   const Reader rd(file, text);
   FusedScenario s = read_scenario(rd, doc, base_dir);
-  if (!s.planner_params.empty()) s.planner_params_at = planners::params_source(text, file, "/planner/params");
+  if (!s.planner_params.empty()) {
+    // Where the parameters were written, for the planner's located refusals at run time.
+    planners::ParamsSource at{std::string(file), 0, 0, "/planner/params"};
+    if (!text.empty()) std::tie(at.line, at.column) = io::line_column(text, io::pointer_offset(text, at.pointer));
+    s.planner_params_at = at;
+  }
   return s;
 }
 

@@ -6,6 +6,7 @@
 #include <limits>
 #include <optional>
 #include <string>
+#include <tuple>
 #include <utility>
 
 #include "pathref/core/error.hpp"
@@ -248,7 +249,12 @@ Scenario read_scenario(const Json& doc, std::string_view file, std::string_view 
 Scenario parse_scenario(std::string_view text, std::string_view file, const std::string& base_dir) {
   const Json doc = io::parse_json_text(text, file);
   Scenario s = read_scenario(doc, file, text, base_dir);
-  if (!s.planner_params.empty()) s.planner_params_at = planners::params_source(text, file, "/planner/params");
+  if (!s.planner_params.empty()) {
+    // Where the parameters were written, for the planner's located refusals at run time.
+    planners::ParamsSource at{std::string(file), 0, 0, "/planner/params"};
+    if (!text.empty()) std::tie(at.line, at.column) = io::line_column(text, io::pointer_offset(text, at.pointer));
+    s.planner_params_at = at;
+  }
   return s;
 }
 

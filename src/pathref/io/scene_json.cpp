@@ -1,5 +1,5 @@
 // Polygon scene reader/writer (spec/formats.md, "Polygon scene (JSON)").
-#include "pathref/geometry/scene.hpp"
+#include "pathref/io/scene_json.hpp"
 
 #include <filesystem>
 #include <fstream>
@@ -11,7 +11,16 @@
 #include "pathref/io/input_file.hpp"
 #include "pathref/io/json_text.hpp"
 
-namespace pathref::geometry {
+namespace pathref::io {
+
+using geometry::Decimal;
+using geometry::decimal_from_double_shortest;
+using geometry::decimal_from_integer;
+using geometry::parse_decimal;
+using geometry::max_polygon_vertices;
+using geometry::max_scene_file_bytes;
+using geometry::max_scene_polygons;
+using geometry::max_scene_vertices;
 
 using Json = nlohmann::json;
 
@@ -212,4 +221,4 @@ Scene read_scene_file(const std::string& path) {
   return parse_scene_json(io::read_input_file(path, "scene file", max_scene_file_bytes), path);
 }
 
-}  // namespace pathref::geometry
+}  // namespace pathref::io
