@@ -1,5 +1,5 @@
 // Fuzz target: model files of `pathref classify --model` (format pathref-ml-model version 1,
-// spec/cin2021-ml.md#cli), read as the CLI reads them: io::parse_json_text then ml::model_from_json.
+// spec/cin2021-ml.md#cli), read as the CLI reads them: io::parse_json_text then io::model_from_json.
 //
 // INVARIANT: for every byte string t, reading t either returns a Model or throws pathref::ParseError
 // (never another exception, never UB, never a recursion deeper than the JSON layer's 64 levels); a
