@@ -28,7 +28,7 @@ namespace pathref::io {
 /// The limits of one JSON reading (spec/formats.md#json-limits).
 struct JsonLimits {
   /// Arrays and objects nested at most this deep: `1`, `"a"` are depth 0, `[]` depth 1, `[[1]]` 2.
-  /// Every pathref format needs at most 6; 64 leaves room for a future format.
+  /// pathref's own documents nest at most 11 deep (golden whole-run vectors); 64 leaves room.
   std::size_t max_depth = 64;
   /// The text's size in bytes. The parsed value takes at most ~24 bytes per text byte
   /// (spec/formats.md#json-limits), so the default bounds a document's memory by ~800 MB.
