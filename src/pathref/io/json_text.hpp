@@ -30,8 +30,8 @@ struct JsonLimits {
   /// Arrays and objects nested at most this deep: `1`, `"a"` are depth 0, `[]` depth 1, `[[1]]` 2.
   /// pathref's own documents nest at most 11 deep (golden whole-run vectors); 64 leaves room.
   std::size_t max_depth = 64;
-  /// The text's size in bytes. The parsed value takes at most ~24 bytes per text byte
-  /// (spec/formats.md#json-limits), so the default bounds a document's memory by ~800 MB.
+  /// The text's size in bytes. The parsed value takes at most ~30 bytes per text byte
+  /// (measured, spec/formats.md#json-limits), so the default bounds a document's memory by ~1 GB.
   std::size_t max_bytes = std::size_t{32} << 20;
   /// Keep each floating-point number's decimal text (as a binary value holding the text) instead
   /// of its double, for readers that convert decimals exactly (polygon scenes, spec/formats.md#scene).
