@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <string>
 
+#include "pathref/io/wall_following.hpp"
 #include "pathref/ml/classifier.hpp"
 #include "pathref/ml/folds.hpp"
 
@@ -18,7 +19,7 @@ using namespace pathref::ml;
 const std::string data_path = std::string(PATHREF_SHARED_DIR) + "/data/uci-wall-following/sensor_readings_4.data";
 
 const Dataset* data() {
-  static const Dataset* d = std::filesystem::exists(data_path) ? new Dataset(read_wall_following(data_path)) : nullptr;
+  static const Dataset* d = std::filesystem::exists(data_path) ? new Dataset(pathref::io::read_wall_following(data_path)) : nullptr;
   return d;
 }
 
