@@ -7,7 +7,6 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -206,11 +205,10 @@ TEST_CASE("input_file: non-regular files are refused without blocking, with the 
             .find("cannot read data file '/dev/zero': it is a character device, not a regular file") != std::string::npos);
   const fs::path fifo = dir / "fifo";
   REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
-  const auto t0 = std::chrono::steady_clock::now();
   CHECK(error_of<UsageError>([&] { (void)read_input_file(fifo.string(), "data file", 100); })
             .find("it is a FIFO (named pipe), not a regular file") != std::string::npos);
-  // Not a timing test: a blocking open would never return (no writer); this only documents it.
-  CHECK(std::chrono::steady_clock::now() - t0 < std::chrono::seconds(30));
+  // A blocking open would never return (no writer): reaching the check above is the proof; ctest's
+  // timeout bounds a regression.
   CHECK(error_of<UsageError>([&] { (void)read_input_file((dir / "missing").string(), "model file", 100); })
             .find("cannot read model file '" + (dir / "missing").string() + "': No such file or directory") != std::string::npos);
   const fs::path f = dir / "f.txt";
